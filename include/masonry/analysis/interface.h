@@ -1,0 +1,76 @@
+/**
+ * @file
+ * Analyses: what a run does (`set Analysis = ...`).
+ */
+#ifndef masonry_analysis_interface_h
+#define masonry_analysis_interface_h
+
+#include <masonry/core/plugins.h>
+#include <masonry/core/run_context.h>
+
+namespace masonry
+{
+  /** What a run does. */
+  namespace analysis
+  {
+    /**
+     * Base class of analyses. The driver creates the analysis selected by
+     * the top-level entry `Analysis`, lets it parse its own subsection
+     * (`subsection <Name>`), then calls setup() with the whole parameter
+     * handler (at top level) so that it can create the plugins of other
+     * subsystems it needs, then run().
+     */
+    class Interface
+    {
+    public:
+      /** Top level: the selection entry is `set Analysis = ...`. */
+      static constexpr const char *registry_section = "";
+      /** The selection entry. */
+      static constexpr const char *registry_entry = "Analysis";
+      /** Default selection. */
+      static const char *
+      default_plugin();
+      /** Help text of the selection entry. */
+      static std::string
+      selection_documentation();
+
+      /** Entries shared by all analyses: none. */
+      static void
+      declare_common_parameters(dealii::ParameterHandler &prm);
+
+      virtual ~Interface() = default;
+
+      /** Read the shared entries: none. */
+      virtual void
+      parse_common_parameters(dealii::ParameterHandler &prm);
+
+      /** Read this analysis' own subsection. */
+      virtual void
+      parse_parameters(dealii::ParameterHandler &prm);
+
+      /**
+       * Create and parse the plugins of other subsystems this analysis uses;
+       * @p prm is at top level. Called by `--validate` too, so every input
+       * error must be found here or in parse_parameters(), not in run().
+       */
+      virtual void
+      setup(dealii::ParameterHandler &prm);
+
+      /**
+       * Do the work: write files through @p context.output, add results to
+       * @p context.summary and set its `status`.
+       */
+      virtual void
+      run(RunContext &context) = 0;
+    };
+  } // namespace analysis
+} // namespace masonry
+
+/** Register an analysis (one line in the analysis' .cc file). */
+#define MASONRY_REGISTER_ANALYSIS(classname, name, description) \
+  MASONRY_REGISTER_PLUGIN(masonry::analysis::Interface,         \
+                          classname,                            \
+                          name,                                 \
+                          description)
+
+#endif

@@ -1,0 +1,94 @@
+/**
+ * @file
+ * The output directory of a run and the screen log that is copied to it.
+ */
+#ifndef masonry_core_output_directory_h
+#define masonry_core_output_directory_h
+
+#include <deal.II/base/mpi.h>
+
+#include <fstream>
+#include <memory>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace masonry
+{
+  /**
+   * The directory a run writes into. It is created if missing (with its
+   * parents) and checked for writing; files are named through file(), which
+   * records them, so that summary.json lists exactly the files of this run
+   * and a user is told which files of an earlier run are left untouched.
+   */
+  class OutputDirectory
+  {
+  public:
+    /**
+     * Create (rank 0) and check the directory @p path. Throws an
+     * ExcParameter naming the entry `Output directory` if it cannot be
+     * created or written.
+     */
+    OutputDirectory(const std::string &path, const MPI_Comm comm);
+
+    /** The directory, ending in '/'. */
+    const std::string &
+    path() const;
+
+    /**
+     * Full path of the file @p name in the directory; records it as a file
+     * of this run.
+     */
+    std::string
+    file(const std::string &name);
+
+    /** Files recorded by file(), in the order they were first named. */
+    const std::vector<std::string> &
+    files() const;
+
+    /**
+     * Files that an earlier run (as listed in the summary.json found on
+     * start-up) wrote and this run did not: left untouched, but no longer
+     * consistent with this run's results.
+     */
+    std::vector<std::string>
+    stale_files() const;
+
+    /** Whether the directory held results of an earlier run on start-up. */
+    bool
+    had_previous_run() const;
+
+  private:
+    std::string              directory;
+    std::vector<std::string> written;
+    std::vector<std::string> previous;
+    bool                     previous_run = false;
+  };
+
+  /**
+   * Screen output of rank 0, copied to log.txt once the output directory is
+   * known. Other ranks write nothing.
+   */
+  class Log
+  {
+  public:
+    explicit Log(const MPI_Comm comm);
+    ~Log();
+
+    /** The stream to write progress and results to. */
+    std::ostream &
+    stream();
+
+    /** Start copying everything written from now on to @p filename. */
+    void
+    open_file(const std::string &filename);
+
+  private:
+    class TeeBuffer;
+    std::unique_ptr<std::ofstream> file;
+    std::unique_ptr<TeeBuffer>     buffer;
+    std::unique_ptr<std::ostream>  out;
+  };
+} // namespace masonry
+
+#endif

@@ -1,0 +1,54 @@
+/**
+ * @file
+ * Parameter-file helpers: where an entry stands in the input file, and
+ * one-line error messages that name the file, the line and the entry.
+ */
+#ifndef masonry_core_parameters_h
+#define masonry_core_parameters_h
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <exception>
+#include <string>
+#include <vector>
+
+namespace masonry
+{
+  /**
+   * Remember, for every `set` line of @p filename, the full path of the entry
+   * ("Geometry model/Barrel vault/Span") and its line number, so that errors
+   * found after parsing can point at the input line.
+   */
+  void
+  record_parameter_locations(const std::string &filename);
+
+  /**
+   * "file.prm:12" for an entry set in the input file, or "file.prm" (with a
+   * note that the default is used) when the file does not set it.
+   */
+  std::string
+  parameter_location(const std::string &full_path);
+
+  /**
+   * The exception for a value that passes its pattern but is still wrong
+   * (a negative span, a missing CAD file, ...). @p entry is the name of an
+   * entry of the subsection being parsed; the message names the file, the
+   * line and the full path of the entry.
+   */
+  dealii::ExcMessage
+  ExcParameter(const std::string &entry, const std::string &message);
+
+  /**
+   * The text of any exception in one line: deal.II's multi-line messages
+   * (without the stack trace) are folded, the noise of its banners removed.
+   */
+  std::string
+  one_line_message(const std::exception &exc);
+
+  /** Split a comma-separated list of doubles (e.g. a vector entry). */
+  std::vector<double>
+  split_doubles(const std::string &text, const std::string &entry);
+} // namespace masonry
+
+#endif

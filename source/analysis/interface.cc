@@ -1,0 +1,35 @@
+#include <masonry/analysis/interface.h>
+
+namespace masonry
+{
+  namespace analysis
+  {
+    const char *
+    Interface::default_plugin()
+    {
+      return "settlement";
+    }
+
+    std::string
+    Interface::selection_documentation()
+    {
+      return "What this run computes.";
+    }
+
+    void
+    Interface::declare_common_parameters(dealii::ParameterHandler &)
+    {}
+
+    void
+    Interface::parse_common_parameters(dealii::ParameterHandler &)
+    {}
+
+    void
+    Interface::parse_parameters(dealii::ParameterHandler &)
+    {}
+
+    void
+    Interface::setup(dealii::ParameterHandler &)
+    {}
+  } // namespace analysis
+} // namespace masonry

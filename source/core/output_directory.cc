@@ -1,0 +1,177 @@
+#include <masonry/core/json.h>
+#include <masonry/core/output_directory.h>
+#include <masonry/core/parameters.h>
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+#include <streambuf>
+
+namespace masonry
+{
+  OutputDirectory::OutputDirectory(const std::string &path, const MPI_Comm comm)
+    : directory(path.empty() || path.back() == '/' ? path : path + "/")
+  {
+    namespace fs = std::filesystem;
+    std::string error;
+    if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        std::error_code ec;
+        fs::create_directories(directory, ec);
+        if (ec)
+          error = "cannot create '" + directory + "': " + ec.message();
+        else
+          {
+            const std::string probe = directory + ".masonry-write-test";
+            std::ofstream     test(probe);
+            if (!test)
+              error = "cannot write into '" + directory + "'";
+            else
+              {
+                test.close();
+                fs::remove(probe, ec);
+              }
+          }
+        if (error.empty())
+          {
+            std::ifstream old(directory + "summary.json");
+            if (old)
+              {
+                previous_run = true;
+                std::stringstream text;
+                text << old.rdbuf();
+                try
+                  {
+                    const Json summary = Json::parse(text.str());
+                    if (summary.contains("files"))
+                      for (std::size_t i = 0; i < summary.at("files").size();
+                           ++i)
+                        previous.push_back(
+                          summary.at("files").at(i).as_string());
+                  }
+                catch (...)
+                  {
+                    // an unreadable old summary only means we cannot list
+                    // its files; the run itself is not affected
+                  }
+              }
+          }
+      }
+    error = dealii::Utilities::MPI::broadcast(comm, error, 0);
+    AssertThrow(error.empty(), ExcParameter("Output directory", error));
+  }
+
+  const std::string &
+  OutputDirectory::path() const
+  {
+    return directory;
+  }
+
+  std::string
+  OutputDirectory::file(const std::string &name)
+  {
+    if (std::find(written.begin(), written.end(), name) == written.end())
+      written.push_back(name);
+    return directory + name;
+  }
+
+  const std::vector<std::string> &
+  OutputDirectory::files() const
+  {
+    return written;
+  }
+
+  std::vector<std::string>
+  OutputDirectory::stale_files() const
+  {
+    std::vector<std::string> stale;
+    for (const auto &f : previous)
+      if (std::find(written.begin(), written.end(), f) == written.end() &&
+          std::filesystem::exists(directory + f))
+        stale.push_back(f);
+    return stale;
+  }
+
+  bool
+  OutputDirectory::had_previous_run() const
+  {
+    return previous_run;
+  }
+
+  /** A stream buffer writing to the screen and, once opened, to a file. */
+  class Log::TeeBuffer : public std::streambuf
+  {
+  public:
+    TeeBuffer(std::streambuf *screen)
+      : screen(screen)
+    {}
+
+    std::streambuf *screen;
+    std::streambuf *file = nullptr;
+
+  protected:
+    int
+    overflow(int c) override
+    {
+      if (c == EOF)
+        return !EOF;
+      if (screen != nullptr)
+        screen->sputc(static_cast<char>(c));
+      if (file != nullptr)
+        file->sputc(static_cast<char>(c));
+      return c;
+    }
+
+    std::streamsize
+    xsputn(const char *s, std::streamsize n) override
+    {
+      if (screen != nullptr)
+        screen->sputn(s, n);
+      if (file != nullptr)
+        file->sputn(s, n);
+      return n;
+    }
+
+    int
+    sync() override
+    {
+      if (screen != nullptr)
+        screen->pubsync();
+      if (file != nullptr)
+        file->pubsync();
+      return 0;
+    }
+  };
+
+  Log::Log(const MPI_Comm comm)
+    : buffer(std::make_unique<TeeBuffer>(
+        dealii::Utilities::MPI::this_mpi_process(comm) == 0 ?
+          std::cout.rdbuf() :
+          nullptr))
+    , out(std::make_unique<std::ostream>(buffer.get()))
+  {}
+
+  Log::~Log()
+  {
+    out->flush();
+  }
+
+  std::ostream &
+  Log::stream()
+  {
+    return *out;
+  }
+
+  void
+  Log::open_file(const std::string &filename)
+  {
+    if (buffer->screen == nullptr)
+      return;
+    file         = std::make_unique<std::ofstream>(filename);
+    buffer->file = file->rdbuf();
+  }
+} // namespace masonry
