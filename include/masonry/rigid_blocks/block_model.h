@@ -1,0 +1,202 @@
+/**
+ * @file
+ * Rigid blocks cut from NURBS patches in parameter space, and the contact
+ * interfaces between them and with the supports.
+ */
+#ifndef masonry_rigid_blocks_block_model_h
+#define masonry_rigid_blocks_block_model_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <array>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace masonry
+{
+  namespace geometry
+  {
+    class Interface;
+  }
+
+  /** Rigid-block models of vaults. */
+  namespace rigid_blocks
+  {
+    /**
+     * A block: the solid between intrados and extrados over one cell of a
+     * patch's parameter mesh. Its six degrees of freedom are the
+     * translation of its centroid and its rotation.
+     */
+    struct Block
+    {
+      /** Index of the patch the block belongs to. */
+      unsigned int patch;
+      /** Cell corners in the patch's unit parameter square (counter-clockwise:
+       * (0,0), (1,0), (1,1), (0,1) of the reference cell). */
+      std::array<dealii::Point<2>, 4> corners;
+      /** Volume, m³. */
+      double volume;
+      /** Centroid, m. */
+      dealii::Point<3> centroid;
+      /** Self weight, N (density × g × volume). */
+      double weight;
+      /** Resultant of extra dead loads on the block, N. */
+      dealii::Tensor<1, 3> extra_force;
+      /** Moment of the extra dead loads about the centroid, N·m. */
+      dealii::Tensor<1, 3> extra_moment;
+    };
+
+    /**
+     * A point of an interface where contact conditions are written, with
+     * its local frame: @p normal from the first block into the second (or
+     * into the ground), @p across the thickness (shell normal), @p along
+     * the interface edge.
+     */
+    struct ContactPoint
+    {
+      /** Position, m. */
+      dealii::Point<3> position;
+      /** Unit normal of the interface, from block `first` to `second`. */
+      dealii::Tensor<1, 3> normal;
+      /** Unit tangent across the thickness. */
+      dealii::Tensor<1, 3> across;
+      /** Unit tangent along the edge. */
+      dealii::Tensor<1, 3> along;
+      /** Tributary area, m² (the interface area shared among its points). */
+      double area;
+      /** Whether the point lies on the intrados (else on the extrados). */
+      bool intrados;
+    };
+
+    /**
+     * An interface: the ruled surface across the thickness along a cell
+     * edge, between two blocks or between a block and a support.
+     */
+    struct Interface
+    {
+      /** The first block. */
+      unsigned int first;
+      /** The second block, or `support` for the ground. */
+      unsigned int second;
+      /** Label of the supported edge (supports only). */
+      std::string support_label;
+      /** Contact points: intrados and extrados at every station. */
+      std::vector<ContactPoint> points;
+      /** Area, m². */
+      double area;
+      /** Centre of the interface, m. */
+      dealii::Point<3> centre;
+
+      /** Marker for the ground as second body. */
+      static constexpr unsigned int support = static_cast<unsigned int>(-1);
+    };
+
+    /**
+     * Options of the discretisation into blocks.
+     */
+    struct Discretisation
+    {
+      /** Blocks along u in every patch. */
+      unsigned int n_u = 3;
+      /** Blocks along v in every patch. */
+      unsigned int n_v = 4;
+      /** Stations along every interface edge (≥ 2; ends included). */
+      unsigned int n_stations = 3;
+      /** Gauss points per parameter direction for volumes and loads. */
+      unsigned int n_quadrature = 6;
+      /** Edge labels (from the geometry plugin) that rest on supports. */
+      std::set<std::string> supported_edges;
+    };
+
+    /**
+     * Blocks and interfaces of a vault. The parameter mesh of each patch is
+     * given by its cell corners, so an optimiser can move them; the model is
+     * rebuilt from the corners.
+     */
+    class BlockModel
+    {
+    public:
+      /**
+       * Cut every patch of @p geometry into n_u × n_v cells of its unit
+       * parameter square (uniform) and build blocks and interfaces.
+       */
+      BlockModel(const geometry::Interface &geometry,
+                 const Discretisation      &options);
+
+      /**
+       * Build blocks and interfaces from given parameter meshes: for every
+       * patch, the (n_u + 1) × (n_v + 1) vertices in lexicographic order
+       * (u fastest) of a structured mesh of its unit square.
+       */
+      BlockModel(const geometry::Interface                     &geometry,
+                 const Discretisation                          &options,
+                 const std::vector<std::vector<dealii::Point<2>>> &vertices);
+
+      /** The blocks. */
+      const std::vector<Block> &
+      blocks() const;
+
+      /** The interfaces (between blocks, then with supports). */
+      const std::vector<Interface> &
+      interfaces() const;
+
+      /** Total number of contact points. */
+      unsigned int
+      n_contact_points() const;
+
+      /** The geometry. */
+      const geometry::Interface &
+      geometry() const;
+
+      /** The options. */
+      const Discretisation &
+      discretisation() const;
+
+      /** The vertices of every patch's parameter mesh. */
+      const std::vector<std::vector<dealii::Point<2>>> &
+      parameter_vertices() const;
+
+      /**
+       * A point of block @p b at parameters @p uv of its patch and
+       * @p zeta ∈ [-1/2, 1/2] across the thickness (−½ intrados, +½
+       * extrados).
+       */
+      dealii::Point<3>
+      solid_point(const unsigned int      b,
+                  const dealii::Point<2> &reference,
+                  const double            zeta) const;
+
+      /** A characteristic length of the model (m): the bounding-box size. */
+      double
+      length_scale() const;
+
+    private:
+      void
+      build();
+
+      const geometry::Interface                  &geom;
+      Discretisation                              options;
+      std::vector<std::vector<dealii::Point<2>>> vertices;
+      std::vector<Block>                          block_list;
+      std::vector<Interface>                      interface_list;
+      double                                      size;
+    };
+
+    /**
+     * Velocity of the point @p x of a block with centroid @p g, translation
+     * @p u and rotation @p theta: u + θ × (x − g).
+     */
+    inline dealii::Tensor<1, 3>
+    rigid_motion(const dealii::Tensor<1, 3> &u,
+                 const dealii::Tensor<1, 3> &theta,
+                 const dealii::Point<3>     &g,
+                 const dealii::Point<3>     &x)
+    {
+      return u + dealii::cross_product_3d(theta, x - g);
+    }
+  } // namespace rigid_blocks
+} // namespace masonry
+
+#endif

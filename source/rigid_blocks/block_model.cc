@@ -1,0 +1,403 @@
+#include <masonry/core/parameters.h>
+#include <masonry/geometry/interface.h>
+#include <masonry/rigid_blocks/block_model.h>
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/tria.h>
+
+#include <cmath>
+
+namespace masonry
+{
+  namespace rigid_blocks
+  {
+    namespace
+    {
+      constexpr double gravity = 9.81;
+
+      /** Bilinear map of the reference square onto a cell (deal.II vertex
+       * order: (0,0), (1,0), (0,1), (1,1)). */
+      dealii::Point<2>
+      cell_point(const std::array<dealii::Point<2>, 4> &c,
+                 const double                           xi,
+                 const double                           eta)
+      {
+        return dealii::Point<2>(
+          (1 - xi) * (1 - eta) * c[0][0] + xi * (1 - eta) * c[1][0] +
+            (1 - xi) * eta * c[2][0] + xi * eta * c[3][0],
+          (1 - xi) * (1 - eta) * c[0][1] + xi * (1 - eta) * c[1][1] +
+            (1 - xi) * eta * c[2][1] + xi * eta * c[3][1]);
+      }
+
+      /** |det| of the Jacobian of cell_point. */
+      double
+      cell_jacobian(const std::array<dealii::Point<2>, 4> &c,
+                    const double                           xi,
+                    const double                           eta)
+      {
+        const dealii::Tensor<1, 2> d_xi =
+          (1 - eta) * (c[1] - c[0]) + eta * (c[3] - c[2]);
+        const dealii::Tensor<1, 2> d_eta =
+          (1 - xi) * (c[2] - c[0]) + xi * (c[3] - c[1]);
+        return std::abs(d_xi[0] * d_eta[1] - d_xi[1] * d_eta[0]);
+      }
+
+      /** Derivatives of the unit normal by central differences (the step
+       * keeps the error near 1e-10 of the curvature). */
+      std::array<dealii::Tensor<1, 3>, 2>
+      normal_derivatives(const geometry::Patch &patch, const dealii::Point<2> &uv)
+      {
+        const double h = 1e-6;
+        std::array<dealii::Tensor<1, 3>, 2> dn;
+        for (unsigned int d = 0; d < 2; ++d)
+          {
+            dealii::Point<2> a = uv, b = uv;
+            a[d] = std::max(0.0, uv[d] - h);
+            b[d] = std::min(1.0, uv[d] + h);
+            dn[d] = (patch.normal(b) - patch.normal(a)) / (b[d] - a[d]);
+          }
+        return dn;
+      }
+    } // namespace
+
+    BlockModel::BlockModel(const geometry::Interface &geometry,
+                           const Discretisation      &options)
+      : geom(geometry)
+      , options(options)
+    {
+      const auto &patches = geom.patches();
+      vertices.resize(patches.size());
+      for (auto &v : vertices)
+        for (unsigned int j = 0; j <= options.n_v; ++j)
+          for (unsigned int i = 0; i <= options.n_u; ++i)
+            v.emplace_back(double(i) / options.n_u, double(j) / options.n_v);
+      build();
+    }
+
+    BlockModel::BlockModel(
+      const geometry::Interface                        &geometry,
+      const Discretisation                             &options,
+      const std::vector<std::vector<dealii::Point<2>>> &vertices)
+      : geom(geometry)
+      , options(options)
+      , vertices(vertices)
+    {
+      build();
+    }
+
+    const std::vector<Block> &
+    BlockModel::blocks() const
+    {
+      return block_list;
+    }
+
+    const std::vector<Interface> &
+    BlockModel::interfaces() const
+    {
+      return interface_list;
+    }
+
+    unsigned int
+    BlockModel::n_contact_points() const
+    {
+      unsigned int n = 0;
+      for (const auto &i : interface_list)
+        n += i.points.size();
+      return n;
+    }
+
+    const geometry::Interface &
+    BlockModel::geometry() const
+    {
+      return geom;
+    }
+
+    const Discretisation &
+    BlockModel::discretisation() const
+    {
+      return options;
+    }
+
+    const std::vector<std::vector<dealii::Point<2>>> &
+    BlockModel::parameter_vertices() const
+    {
+      return vertices;
+    }
+
+    double
+    BlockModel::length_scale() const
+    {
+      return size;
+    }
+
+    dealii::Point<3>
+    BlockModel::solid_point(const unsigned int      b,
+                            const dealii::Point<2> &reference,
+                            const double            zeta) const
+    {
+      const Block            &block = block_list[b];
+      const geometry::Patch  &patch = geom.patches()[block.patch];
+      const dealii::Point<2>  uv =
+        cell_point(block.corners, reference[0], reference[1]);
+      const dealii::Point<3> x = patch.point(uv);
+      return x + zeta * geom.thickness(x) * patch.normal(uv);
+    }
+
+    void
+    BlockModel::build()
+    {
+      const auto &patches = geom.patches();
+      AssertThrow(!patches.empty(),
+                  dealii::ExcMessage("the geometry model has no patch"));
+      AssertThrow(options.n_u >= 1 && options.n_v >= 1 &&
+                    options.n_stations >= 2 && options.n_quadrature >= 1,
+                  dealii::ExcMessage("invalid block discretisation"));
+
+      // bounding box: the length scale for tolerances and LP scaling
+      {
+        dealii::Point<3> lo, hi;
+        bool             first = true;
+        for (const auto &p : patches)
+          for (unsigned int i = 0; i <= 4; ++i)
+            for (unsigned int j = 0; j <= 4; ++j)
+              {
+                const auto x = p.point(dealii::Point<2>(i / 4., j / 4.));
+                for (unsigned int d = 0; d < 3; ++d)
+                  {
+                    lo[d] = first ? x[d] : std::min(lo[d], x[d]);
+                    hi[d] = first ? x[d] : std::max(hi[d], x[d]);
+                  }
+                first = false;
+              }
+        size = lo.distance(hi);
+      }
+
+      const dealii::QGauss<1> gauss(options.n_quadrature);
+      const double            zeta_gauss[2] = {-0.5 / std::sqrt(3.), 0.5 / std::sqrt(3.)};
+      const double            rho_g = geom.density() * gravity;
+
+      // one parameter-space triangulation per patch: cells are blocks,
+      // faces are interfaces (boundary ids 0..3: edges u=0, u=1, v=0, v=1)
+      struct BoundaryFace
+      {
+        unsigned int                     block;
+        unsigned int                     patch;
+        unsigned int                     edge;
+        std::array<dealii::Point<2>, 2> uv;
+        std::array<dealii::Point<3>, 3> x; // ends and midpoint
+        dealii::Point<2>                 outward;
+      };
+      std::vector<BoundaryFace> boundary_faces;
+      struct InnerFace
+      {
+        unsigned int                     first, second;
+        std::array<dealii::Point<2>, 2> uv;
+        dealii::Point<2>                 outward;
+      };
+      std::vector<InnerFace> inner_faces;
+
+      block_list.clear();
+      interface_list.clear();
+      for (unsigned int p = 0; p < patches.size(); ++p)
+        {
+          dealii::Triangulation<2> mesh;
+          dealii::GridGenerator::subdivided_hyper_rectangle(
+            mesh,
+            {options.n_u, options.n_v},
+            dealii::Point<2>(0, 0),
+            dealii::Point<2>(1, 1),
+            true);
+          AssertThrow(vertices[p].size() == mesh.n_vertices(),
+                      dealii::ExcMessage("parameter mesh of patch " +
+                                         std::to_string(p) +
+                                         " has the wrong number of vertices"));
+          // subdivided_hyper_rectangle numbers vertices lexicographically
+          for (const auto &cell : mesh.active_cell_iterators())
+            for (const unsigned int v : cell->vertex_indices())
+              cell->vertex(v) = vertices[p][cell->vertex_index(v)];
+
+          const unsigned int offset = block_list.size();
+          for (const auto &cell : mesh.active_cell_iterators())
+            {
+              Block block;
+              block.patch = p;
+              for (unsigned int v = 0; v < 4; ++v)
+                block.corners[v] = cell->vertex(v);
+              double               volume = 0;
+              dealii::Tensor<1, 3> first_moment;
+              for (unsigned int i = 0; i < gauss.size(); ++i)
+                for (unsigned int j = 0; j < gauss.size(); ++j)
+                  {
+                    const double xi = gauss.point(i)[0], eta = gauss.point(j)[0];
+                    const dealii::Point<2> uv = cell_point(block.corners, xi, eta);
+                    const double w = gauss.weight(i) * gauss.weight(j) *
+                                     cell_jacobian(block.corners, xi, eta);
+                    const dealii::Point<3> s  = patches[p].point(uv);
+                    const auto             ts = patches[p].tangents(uv);
+                    const auto             n  = patches[p].normal(uv);
+                    const auto             dn = normal_derivatives(patches[p], uv);
+                    const double           t  = geom.thickness(s);
+                    for (const double zeta : zeta_gauss)
+                      {
+                        // det[x_u, x_v, x_zeta] with x = s + zeta t n; the
+                        // zeta t_u n terms are parallel to x_zeta and drop
+                        const double jac = std::abs(
+                          t * (n * dealii::cross_product_3d(ts[0] + zeta * t * dn[0],
+                                                            ts[1] + zeta * t * dn[1])));
+                        const dealii::Point<3> x = s + zeta * t * n;
+                        volume += 0.5 * w * jac;
+                        first_moment += 0.5 * w * jac * x;
+                      }
+                  }
+              AssertThrow(volume > 0 && std::isfinite(volume),
+                          dealii::ExcMessage(
+                            "block " + std::to_string(block_list.size()) +
+                            " of patch " + std::to_string(p) +
+                            " has no volume: degenerate cell or thickness"));
+              block.volume   = volume;
+              block.centroid = dealii::Point<3>(first_moment / volume);
+              block.weight   = rho_g * volume;
+              block_list.push_back(block);
+            }
+
+          for (const auto &cell : mesh.active_cell_iterators())
+            for (const unsigned int f : cell->face_indices())
+              {
+                // outward direction of the face in parameter space
+                dealii::Point<2> outward;
+                outward[f / 2] = (f % 2 == 0) ? -1. : 1.;
+                const std::array<dealii::Point<2>, 2> uv = {cell->face(f)->vertex(0),
+                                                            cell->face(f)->vertex(1)};
+                const unsigned int b = offset + cell->active_cell_index();
+                if (cell->at_boundary(f))
+                  {
+                    BoundaryFace bf{b, p, cell->face(f)->boundary_id(), uv, {}, outward};
+                    bf.x[0] = patches[p].point(uv[0]);
+                    bf.x[1] = patches[p].point(uv[1]);
+                    bf.x[2] = patches[p].point(dealii::Point<2>(0.5 * (uv[0] + uv[1])));
+                    boundary_faces.push_back(bf);
+                  }
+                else if (cell->neighbor(f)->active_cell_index() >
+                         cell->active_cell_index())
+                  inner_faces.push_back(
+                    {b, offset + cell->neighbor(f)->active_cell_index(), uv, outward});
+              }
+        }
+
+      // Contact points of an interface along the edge uv[0] -> uv[1] of a
+      // block of patch p; the normal points along the parameter-space
+      // direction `outward` mapped to 3D (out of block `first`).
+      auto make_interface = [&](const unsigned int                    p,
+                                const std::array<dealii::Point<2>, 2> &uv,
+                                const dealii::Point<2>                &outward,
+                                const unsigned int                     first,
+                                const unsigned int                     second) {
+        Interface     interface;
+        interface.first  = first;
+        interface.second = second;
+        interface.area   = 0;
+        const unsigned int    n = options.n_stations;
+        const geometry::Patch &patch = patches[p];
+        dealii::Tensor<1, 3>  centre;
+        for (unsigned int k = 0; k < n; ++k)
+          {
+            const double           s  = double(k) / (n - 1);
+            const dealii::Point<2> q  = uv[0] + s * (uv[1] - uv[0]);
+            const dealii::Point<3> x  = patch.point(q);
+            const auto             ts = patch.tangents(q);
+            const auto             ns = patch.normal(q);
+            const double           t  = geom.thickness(x);
+            const dealii::Tensor<1, 3> edge =
+              ts[0] * (uv[1][0] - uv[0][0]) + ts[1] * (uv[1][1] - uv[0][1]);
+            dealii::Tensor<1, 3> normal = dealii::cross_product_3d(edge, ns);
+            const double         norm   = normal.norm();
+            if (norm == 0)
+              continue;
+            normal /= norm;
+            const dealii::Tensor<1, 3> out = ts[0] * outward[0] + ts[1] * outward[1];
+            if (normal * out < 0)
+              normal = -normal;
+            // trapezoidal weight of the station along the edge
+            const double weight = edge.norm() / (n - 1) * ((k == 0 || k == n - 1) ? 0.5 : 1.0);
+            for (const bool intrados : {true, false})
+              {
+                ContactPoint c;
+                c.position = x + (intrados ? -0.5 : 0.5) * t * ns;
+                c.normal   = normal;
+                c.across   = ns;
+                c.along    = dealii::cross_product_3d(normal, ns);
+                c.area     = 0.5 * t * weight;
+                c.intrados = intrados;
+                interface.points.push_back(c);
+                interface.area += c.area;
+                centre += c.area * c.position;
+              }
+          }
+        if (interface.area > 0)
+          {
+            interface.centre = dealii::Point<3>(centre / interface.area);
+            interface_list.push_back(interface);
+          }
+      };
+
+      for (const auto &f : inner_faces)
+        make_interface(block_list[f.first].patch, f.uv, f.outward, f.first, f.second);
+
+      // boundary faces: glued to another patch's face, on a support, or free
+      const double       tolerance = 1e-8 * size;
+      std::vector<bool>  used(boundary_faces.size(), false);
+      for (unsigned int a = 0; a < boundary_faces.size(); ++a)
+        {
+          if (used[a])
+            continue;
+          const auto &fa = boundary_faces[a];
+          // degenerate edges (a dome's pole) carry no interface
+          if (fa.x[0].distance(fa.x[1]) < tolerance &&
+              fa.x[0].distance(fa.x[2]) < tolerance)
+            continue;
+          for (unsigned int b = a + 1; b < boundary_faces.size(); ++b)
+            {
+              const auto &fb = boundary_faces[b];
+              if (used[b] || fa.block == fb.block)
+                continue;
+              const bool same =
+                fa.x[2].distance(fb.x[2]) < tolerance &&
+                ((fa.x[0].distance(fb.x[0]) < tolerance &&
+                  fa.x[1].distance(fb.x[1]) < tolerance) ||
+                 (fa.x[0].distance(fb.x[1]) < tolerance &&
+                  fa.x[1].distance(fb.x[0]) < tolerance));
+              if (same)
+                {
+                  used[a] = used[b] = true;
+                  make_interface(fa.patch, fa.uv, fa.outward, fa.block, fb.block);
+                  break;
+                }
+            }
+        }
+      std::set<std::string> labels_found;
+      for (unsigned int a = 0; a < boundary_faces.size(); ++a)
+        {
+          const auto       &fa    = boundary_faces[a];
+          const std::string label = patches[fa.patch].edge_labels()[fa.edge];
+          labels_found.insert(label);
+          if (used[a] || options.supported_edges.count(label) == 0)
+            continue;
+          const unsigned int before = interface_list.size();
+          make_interface(fa.patch, fa.uv, fa.outward, fa.block, Interface::support);
+          if (interface_list.size() > before)
+            interface_list.back().support_label = label;
+        }
+      for (const auto &label : options.supported_edges)
+        {
+          std::string known;
+          for (const auto &l : labels_found)
+            known += (known.empty() ? "" : ", ") + l;
+          AssertThrow(labels_found.count(label) > 0,
+                      ExcParameter("Supported edges",
+                                   "no free edge of the geometry is labelled '" +
+                                     label + "'; the edges are: " + known));
+        }
+    }
+  } // namespace rigid_blocks
+} // namespace masonry
