@@ -1,0 +1,145 @@
+/**
+ * @file
+ * LP solvers: the back-ends that solve a LinearProgram
+ * (`subsection LP solver`, `set Solver = clp|glpk`).
+ */
+#ifndef masonry_lp_interface_h
+#define masonry_lp_interface_h
+
+#include <masonry/core/plugins.h>
+#include <masonry/lp/linear_program.h>
+
+#include <string>
+#include <vector>
+
+namespace masonry
+{
+  namespace lp
+  {
+    /** Outcome of a solve. */
+    enum class Status
+    {
+      /** An optimal solution was found. */
+      optimal,
+      /** The problem is feasible but its objective is unbounded. */
+      unbounded,
+      /** The problem has no feasible point. */
+      infeasible,
+      /**
+       * The solver stopped without a proof of either (time limit, numerical
+       * trouble, invalid input): the solution vectors are not meaningful.
+       */
+      failed
+    };
+
+    /** "optimal", "unbounded", "infeasible" or "failed". */
+    std::string
+    to_string(const Status status);
+
+    /**
+     * The result of LP solve.
+     *
+     * Dual sign convention (the same for every back-end): the dual
+     * `row_duals[i]` of row i is the derivative of the optimal objective
+     * value (of the sense being optimised, i.e. of @f$c^T x@f$ whether it
+     * is maximised or minimised) with respect to the bound of row i that is
+     * active, @f$y_i = \partial (c^T x^*) / \partial b_i@f$. Consequently,
+     * with reduced costs @f$d = c - A^T y@f$:
+     * - maximisation: @f$y_i \ge 0@f$ if the upper bound of row i is
+     *   active, @f$y_i \le 0@f$ if the lower bound is active;
+     * - minimisation: @f$y_i \le 0@f$ at an active upper bound,
+     *   @f$y_i \ge 0@f$ at an active lower bound;
+     * - @f$y_i = 0@f$ for a row strictly between its bounds;
+     * - strong duality: @f$c^T x^* = \sum_i y_i b_i + \sum_j d_j x_j^*@f$
+     *   with @f$b_i@f$ the active bound of row i (and @f$x_j^*@f$ at a bound
+     *   wherever @f$d_j \neq 0@f$).
+     */
+    struct Solution
+    {
+      /** Outcome; the other members are meaningful only if optimal. */
+      Status status = Status::failed;
+      /** The optimal value of @f$c^T x@f$ (in the problem's sense). */
+      double objective = 0;
+      /** The primal solution, one value per column. */
+      std::vector<double> x;
+      /** The duals of the rows, one per row (sign: see above). */
+      std::vector<double> row_duals;
+      /** Number of simplex (or barrier plus crossover) iterations. */
+      unsigned int iterations = 0;
+      /** Wall-clock time of the solve, in seconds. */
+      double seconds = 0;
+      /** Free text from the back-end (reason of a failure, ...). */
+      std::string message;
+    };
+
+    /**
+     * Base class of LP solver back-ends. Create one with
+     * `plugins::Registry<lp::Interface>::create(prm)` after the registry's
+     * declare_parameters(); it reads the shared entries of
+     * `subsection LP solver` and its own subsection
+     * (`subsection LP solver/Clp`, ...).
+     */
+    class Interface
+    {
+    public:
+      /** Parameters live in `subsection LP solver`. */
+      static constexpr const char *registry_section = "LP solver";
+      /** The selection entry: `set Solver = ...`. */
+      static constexpr const char *registry_entry = "Solver";
+      /** Default selection: "clp". */
+      static const char *
+      default_plugin();
+      /** Help text of the selection entry. */
+      static std::string
+      selection_documentation();
+
+      /**
+       * Entries shared by all back-ends: `Export MPS file` (Bool) and
+       * `Time limit` (Double, seconds).
+       */
+      static void
+      declare_common_parameters(dealii::ParameterHandler &prm);
+
+      virtual ~Interface() = default;
+
+      /** Read the shared entries. */
+      virtual void
+      parse_common_parameters(dealii::ParameterHandler &prm);
+
+      /** Read this back-end's own subsection: nothing by default. */
+      virtual void
+      parse_parameters(dealii::ParameterHandler &prm);
+
+      /**
+       * Solve @p lp. Never throws for infeasible or unbounded problems (see
+       * Solution::status); a back-end failure gives Status::failed with a
+       * message.
+       */
+      virtual Solution
+      solve(const LinearProgram &lp) const = 0;
+
+      /**
+       * Whether the caller should write the LP to `lp.mps` in the output
+       * directory (entry `Export MPS file`).
+       */
+      bool
+      export_mps() const;
+
+      /** Time limit of a solve in seconds; 0 means none (`Time limit`). */
+      double
+      time_limit() const;
+
+    protected:
+      /** Value of `Export MPS file`. */
+      bool export_mps_file = false;
+      /** Value of `Time limit`, in seconds (0: no limit). */
+      double time_limit_seconds = 0;
+    };
+  } // namespace lp
+} // namespace masonry
+
+/** Register an LP solver back-end (one line in the back-end's .cc file). */
+#define MASONRY_REGISTER_LP_SOLVER(classname, name, description) \
+  MASONRY_REGISTER_PLUGIN(masonry::lp::Interface, classname, name, description)
+
+#endif

@@ -1,0 +1,79 @@
+#include <masonry/lp/interface.h>
+
+namespace masonry
+{
+  namespace lp
+  {
+    std::string
+    to_string(const Status status)
+    {
+      switch (status)
+        {
+          case Status::optimal:
+            return "optimal";
+          case Status::unbounded:
+            return "unbounded";
+          case Status::infeasible:
+            return "infeasible";
+          case Status::failed:
+            return "failed";
+        }
+      return "failed";
+    }
+
+    const char *
+    Interface::default_plugin()
+    {
+      return "clp";
+    }
+
+    std::string
+    Interface::selection_documentation()
+    {
+      return "The linear-programming solver used for limit analysis and "
+             "every other linear program of the run.";
+    }
+
+    void
+    Interface::declare_common_parameters(dealii::ParameterHandler &prm)
+    {
+      prm.declare_entry("Export MPS file",
+                        "false",
+                        dealii::Patterns::Bool(),
+                        "Whether to write each linear program to the file "
+                        "`lp.mps' in the output directory (MPS format, "
+                        "readable by `clp' and `glpsol --freemps'; a "
+                        "maximisation is written as the minimisation of the "
+                        "negated objective). Unitless flag.");
+      prm.declare_entry("Time limit",
+                        "0",
+                        dealii::Patterns::Double(0),
+                        "Wall-clock time limit of one LP solve, in seconds; "
+                        "0 means no limit. A solve that reaches the limit "
+                        "reports status `failed'.");
+    }
+
+    void
+    Interface::parse_common_parameters(dealii::ParameterHandler &prm)
+    {
+      export_mps_file    = prm.get_bool("Export MPS file");
+      time_limit_seconds = prm.get_double("Time limit");
+    }
+
+    void
+    Interface::parse_parameters(dealii::ParameterHandler &)
+    {}
+
+    bool
+    Interface::export_mps() const
+    {
+      return export_mps_file;
+    }
+
+    double
+    Interface::time_limit() const
+    {
+      return time_limit_seconds;
+    }
+  } // namespace lp
+} // namespace masonry
