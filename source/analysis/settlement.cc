@@ -182,6 +182,7 @@ namespace masonry
       {
         geometry = plugins::Registry<geometry::Interface>::create(prm);
         solver   = plugins::Registry<lp::Interface>::create(prm);
+        solver_name = plugins::Registry<lp::Interface>::selected(prm);
         // build once here so that --validate finds bad labels and geometry
         plugins::ParsePathScope scope(section);
         model = std::make_unique<rigid_blocks::BlockModel>(*geometry, options);

@@ -1,5 +1,6 @@
 #include <masonry/core/parameters.h>
 #include <masonry/geometry/interface.h>
+#include <masonry/geometry/patch_occt.h>
 #include <masonry/rigid_blocks/block_model.h>
 
 #include <deal.II/base/quadrature_lib.h>
@@ -59,7 +60,69 @@ namespace masonry
           }
         return dn;
       }
+
+      /** Knots of a patch in unit-square parameters (u: d = 0, v: d = 1). */
+      std::vector<double>
+      unit_knots(const geometry::Patch &patch, const unsigned int d)
+      {
+        const geometry::PatchSurface &s = patch.surface();
+        const Handle(Geom_BSplineSurface) &b = s.bspline;
+        const int    n  = d == 0 ? b->NbUKnots() : b->NbVKnots();
+        const double lo = d == 0 ? s.u0 : s.v0, hi = d == 0 ? s.u1 : s.v1;
+        std::vector<double> knots;
+        for (int i = 1; i <= n; ++i)
+          knots.push_back(((d == 0 ? b->UKnot(i) : b->VKnot(i)) - lo) / (hi - lo));
+        return knots;
+      }
+
+      /** [a, b] split at the knots inside it. */
+      std::vector<double>
+      breaks(const double a, const double b, const std::vector<double> &knots)
+      {
+        std::vector<double> x = {a};
+        for (const double k : knots)
+          if (k > a + 1e-12 && k < b - 1e-12)
+            x.push_back(k);
+        x.push_back(b);
+        return x;
+      }
     } // namespace
+
+    std::vector<std::pair<dealii::Point<2>, double>>
+    BlockModel::quadrature(const unsigned int b) const
+    {
+      const Block                           &block = block_list[b];
+      const auto                            &c     = block.corners;
+      const dealii::QGauss<1>                gauss(options.n_quadrature);
+      std::vector<std::pair<dealii::Point<2>, double>> points;
+      const bool axis_aligned = c[0][1] == c[1][1] && c[2][1] == c[3][1] &&
+                                c[0][0] == c[2][0] && c[1][0] == c[3][0];
+      if (axis_aligned)
+        {
+          const geometry::Patch &patch = geom.patches()[block.patch];
+          const auto u = breaks(c[0][0], c[1][0], unit_knots(patch, 0));
+          const auto v = breaks(c[0][1], c[2][1], unit_knots(patch, 1));
+          for (unsigned int i = 0; i + 1 < u.size(); ++i)
+            for (unsigned int j = 0; j + 1 < v.size(); ++j)
+              for (unsigned int p = 0; p < gauss.size(); ++p)
+                for (unsigned int q = 0; q < gauss.size(); ++q)
+                  points.emplace_back(
+                    dealii::Point<2>(u[i] + gauss.point(p)[0] * (u[i + 1] - u[i]),
+                                     v[j] + gauss.point(q)[0] * (v[j + 1] - v[j])),
+                    gauss.weight(p) * gauss.weight(q) * (u[i + 1] - u[i]) *
+                      (v[j + 1] - v[j]));
+          return points;
+        }
+      for (unsigned int p = 0; p < gauss.size(); ++p)
+        for (unsigned int q = 0; q < gauss.size(); ++q)
+          {
+            const double xi = gauss.point(p)[0], eta = gauss.point(q)[0];
+            points.emplace_back(cell_point(c, xi, eta),
+                                gauss.weight(p) * gauss.weight(q) *
+                                  cell_jacobian(c, xi, eta));
+          }
+      return points;
+    }
 
     BlockModel::BlockModel(const geometry::Interface &geometry,
                            const Discretisation      &options)
@@ -173,7 +236,6 @@ namespace masonry
         size = lo.distance(hi);
       }
 
-      const dealii::QGauss<1> gauss(options.n_quadrature);
       const double            zeta_gauss[2] = {-0.5 / std::sqrt(3.), 0.5 / std::sqrt(3.)};
       const double            rho_g = geom.density() * gravity;
 
@@ -224,32 +286,29 @@ namespace masonry
               block.patch = p;
               for (unsigned int v = 0; v < 4; ++v)
                 block.corners[v] = cell->vertex(v);
+              block_list.push_back(block);
               double               volume = 0;
               dealii::Tensor<1, 3> first_moment;
-              for (unsigned int i = 0; i < gauss.size(); ++i)
-                for (unsigned int j = 0; j < gauss.size(); ++j)
-                  {
-                    const double xi = gauss.point(i)[0], eta = gauss.point(j)[0];
-                    const dealii::Point<2> uv = cell_point(block.corners, xi, eta);
-                    const double w = gauss.weight(i) * gauss.weight(j) *
-                                     cell_jacobian(block.corners, xi, eta);
-                    const dealii::Point<3> s  = patches[p].point(uv);
-                    const auto             ts = patches[p].tangents(uv);
-                    const auto             n  = patches[p].normal(uv);
-                    const auto             dn = normal_derivatives(patches[p], uv);
-                    const double           t  = geom.thickness(s);
-                    for (const double zeta : zeta_gauss)
-                      {
-                        // det[x_u, x_v, x_zeta] with x = s + zeta t n; the
-                        // zeta t_u n terms are parallel to x_zeta and drop
-                        const double jac = std::abs(
-                          t * (n * dealii::cross_product_3d(ts[0] + zeta * t * dn[0],
-                                                            ts[1] + zeta * t * dn[1])));
-                        const dealii::Point<3> x = s + zeta * t * n;
-                        volume += 0.5 * w * jac;
-                        first_moment += 0.5 * w * jac * x;
-                      }
-                  }
+              for (const auto &[uv, w] : quadrature(block_list.size() - 1))
+                {
+                  const dealii::Point<3> s  = patches[p].point(uv);
+                  const auto             ts = patches[p].tangents(uv);
+                  const auto             n  = patches[p].normal(uv);
+                  const auto             dn = normal_derivatives(patches[p], uv);
+                  const double           t  = geom.thickness(s);
+                  for (const double zeta : zeta_gauss)
+                    {
+                      // det[x_u, x_v, x_zeta] with x = s + zeta t n; the
+                      // zeta t_u n terms are parallel to x_zeta and drop
+                      const double jac = std::abs(
+                        t * (n * dealii::cross_product_3d(ts[0] + zeta * t * dn[0],
+                                                          ts[1] + zeta * t * dn[1])));
+                      const dealii::Point<3> x = s + zeta * t * n;
+                      volume += 0.5 * w * jac;
+                      first_moment += 0.5 * w * jac * x;
+                    }
+                }
+              block_list.pop_back();
               AssertThrow(volume > 0 && std::isfinite(volume),
                           dealii::ExcMessage(
                             "block " + std::to_string(block_list.size()) +

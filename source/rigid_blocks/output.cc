@@ -34,31 +34,15 @@ namespace masonry
                            std::vector<dealii::Tensor<1, 3>> &force,
                            std::vector<dealii::Tensor<1, 3>> &moment)
     {
-      const auto             &patches = model.geometry().patches();
-      const dealii::QGauss<2> gauss(model.discretisation().n_quadrature);
+      const auto &patches = model.geometry().patches();
       for (unsigned int b = 0; b < model.blocks().size(); ++b)
         {
           const Block &block = model.blocks()[b];
-          const auto  &c     = block.corners;
-          for (unsigned int k = 0; k < gauss.size(); ++k)
+          for (const auto &[uv, w] : model.quadrature(b))
             {
-              const double xi = gauss.point(k)[0], eta = gauss.point(k)[1];
-              const dealii::Point<2> uv(
-                (1 - xi) * (1 - eta) * c[0][0] + xi * (1 - eta) * c[1][0] +
-                  (1 - xi) * eta * c[2][0] + xi * eta * c[3][0],
-                (1 - xi) * (1 - eta) * c[0][1] + xi * (1 - eta) * c[1][1] +
-                  (1 - xi) * eta * c[2][1] + xi * eta * c[3][1]);
-              const dealii::Tensor<1, 2> d_xi =
-                (1 - eta) * (c[1] - c[0]) + eta * (c[3] - c[2]);
-              const dealii::Tensor<1, 2> d_eta =
-                (1 - xi) * (c[2] - c[0]) + xi * (c[3] - c[1]);
-              const double jac_uv =
-                std::abs(d_xi[0] * d_eta[1] - d_xi[1] * d_eta[0]);
               const auto   ts = patches[block.patch].tangents(uv);
-              const double dA =
-                dealii::cross_product_3d(ts[0], ts[1]).norm() * jac_uv *
-                gauss.weight(k);
-              const dealii::Point<3> x = patches[block.patch].point(uv);
+              const double dA = dealii::cross_product_3d(ts[0], ts[1]).norm() * w;
+              const dealii::Point<3> x    = patches[block.patch].point(uv);
               const double           load = q.value(x);
               if (load == 0)
                 continue;

@@ -168,6 +168,16 @@ namespace masonry
                   const dealii::Point<2> &reference,
                   const double            zeta) const;
 
+      /**
+       * Quadrature on the middle surface of block @p b: parameter points and
+       * weights (in parameter area, including the Jacobian of the cell map).
+       * Axis-aligned cells are split at the knot lines of the NURBS patch so
+       * that Gauss quadrature integrates smooth (rational) functions on
+       * every piece; other cells use a Gauss rule on the bilinear cell map.
+       */
+      std::vector<std::pair<dealii::Point<2>, double>>
+      quadrature(const unsigned int b) const;
+
       /** A characteristic length of the model (m): the bounding-box size. */
       double
       length_scale() const;

@@ -1,0 +1,96 @@
+/**
+ * @file
+ * Helpers for the rigid-block tests: run a prm text in-process and read the
+ * summary.json it wrote.
+ */
+#ifndef masonry_tests_vault_tests_h
+#define masonry_tests_vault_tests_h
+
+#include <masonry/core/application.h>
+#include <masonry/core/json.h>
+
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+
+namespace vault_tests
+{
+  /**
+   * Write @p prm_text to NAME.prm (with `Output directory = results/NAME`),
+   * run masonry on it with screen output discarded and return its
+   * summary.json. Aborts the test with a message if the run fails.
+   */
+  inline masonry::Json
+  run(const std::string &name,
+      const std::string &prm_text,
+      const MPI_Comm     comm = MPI_COMM_WORLD)
+  {
+    {
+      std::ofstream prm(name + ".prm");
+      prm << "set Output directory = results/" << name << "\n" << prm_text;
+    }
+    std::ostringstream screen;
+    std::streambuf    *old  = std::cout.rdbuf(screen.rdbuf());
+    const int          code = masonry::run_application({name + ".prm"}, comm);
+    std::cout.rdbuf(old);
+    if (code != 0)
+      {
+        std::cout << "FAILED: masonry returned " << code << " for " << name
+                  << "\n"
+                  << screen.str();
+        std::exit(1);
+      }
+    std::ifstream     in("results/" + name + "/summary.json");
+    std::stringstream text;
+    text << in.rdbuf();
+    return masonry::Json::parse(text.str());
+  }
+
+  /** Print "OK what" or "FAILED what" for a check. */
+  inline bool
+  check(const bool ok, const std::string &what)
+  {
+    std::cout << (ok ? "OK " : "FAILED ") << what << "\n";
+    return ok;
+  }
+
+  /** Relative difference of @p a and @p b. */
+  inline double
+  relative(const double a, const double b)
+  {
+    return std::abs(a - b) / std::max(std::abs(b), 1e-300);
+  }
+
+  /** A prm text for a semicircular arch of radius R (thickness t, depth 1 m,
+   * density 2000 kg/m³) with @p n blocks per half under @p settlement of the
+   * right springing. */
+  inline std::string
+  arch_prm(const double       R,
+           const double       t,
+           const unsigned int n,
+           const std::string &settlement,
+           const std::string &contact = "unilateral",
+           const std::string &solver  = "clp")
+  {
+    std::ostringstream s;
+    s.precision(17);
+    s << "set Analysis = settlement\n"
+      << "subsection Geometry model\n  set Model name = arch\n"
+      << "  set Thickness = " << t << "\n  set Density = 2000\n"
+      << "  subsection Arch\n    set Shape = circular\n    set Span = " << 2 * R
+      << "\n    set Rise = " << R << "\n    set Depth = 1\n  end\nend\n"
+      << "subsection Settlement\n  set Blocks along u = " << n
+      << "\n  set Blocks along v = 1\n  set Stations per edge = 2\n"
+      << "  set Supported edges = springing left, springing right\n"
+      << "  set Settling edges = springing right\n"
+      << "  set Settlement = " << settlement << "\n"
+      << "  set Support contact = " << contact << "\n"
+      << "  set Write picture = false\nend\n"
+      << "subsection LP solver\n  set Solver = " << solver << "\nend\n";
+    return s.str();
+  }
+} // namespace vault_tests
+
+#endif
