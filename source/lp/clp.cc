@@ -29,6 +29,43 @@ namespace masonry
           return -COIN_DBL_MAX;
         return bound;
       }
+
+      /**
+       * Whether the optimal solution of @p model is a valid optimality
+       * certificate for @p lp: finite primal values, and every nonzero row
+       * dual or reduced cost d = c - A^T y has the sign of a finite bound.
+       */
+      bool
+      certificate_ok(const LinearProgram &lp, const ClpSimplex &model)
+      {
+        const unsigned int n = lp.n_columns(), m = lp.n_rows();
+        const double       sense = lp.maximize ? 1. : -1.;
+        const double      *x     = model.primalColumnSolution();
+        const double      *y     = model.dualRowSolution();
+        for (unsigned int j = 0; j < n; ++j)
+          if (!(std::abs(x[j]) < 1e20))
+            return false;
+        std::vector<double> d = lp.objective();
+        for (const auto &e : lp.entries())
+          d[e.column] -= e.value * y[e.row];
+        // a positive sense*dual means the upper bound is active
+        const auto allowed =
+          [sense](const double dual, const double lower, const double upper) {
+            const double tolerance = 1e-7;
+            if (sense * dual > tolerance)
+              return upper < infinity;
+            if (sense * dual < -tolerance)
+              return lower > -infinity;
+            return true;
+          };
+        for (unsigned int i = 0; i < m; ++i)
+          if (!allowed(y[i], lp.row_lower()[i], lp.row_upper()[i]))
+            return false;
+        for (unsigned int j = 0; j < n; ++j)
+          if (!allowed(d[j], lp.column_lower()[j], lp.column_upper()[j]))
+            return false;
+        return true;
+      }
     } // namespace
 
     /**
@@ -172,6 +209,19 @@ namespace masonry
           run(*model, false);
           solution.iterations += model->numberIterations();
         }
+      if (model->isProvenOptimal() && !certificate_ok(lp, *model))
+        {
+          // the barrier maps infinite bounds to huge finite ones, so that an
+          // unbounded problem comes back "optimal" at a huge vertex: the
+          // duals then have a sign that only a finite bound allows. Decide
+          // with the primal simplex on the original problem.
+          model = create(lp);
+          ClpSolve options;
+          options.setSolveType(ClpSolve::usePrimal);
+          options.setPresolveType(ClpSolve::presolveOff);
+          model->initialSolve(options);
+          solution.iterations += model->numberIterations();
+        }
 
       if (model->isProvenOptimal())
         {
@@ -179,13 +229,11 @@ namespace masonry
           solution.status = Status::optimal;
           solution.x.assign(model->primalColumnSolution(),
                             model->primalColumnSolution() + n);
-          // Clp's duals are d(objective)/d(bound) for the minimisation of
-          // direction * c^T x: multiply by the direction to get our
-          // convention (derivative of c^T x itself).
-          const double direction = model->optimizationDirection();
-          solution.row_duals.resize(m);
-          for (unsigned int i = 0; i < m; ++i)
-            solution.row_duals[i] = direction * model->dualRowSolution()[i];
+          // Clp's row duals are d(c^T x)/d(row bound) for either sense
+          // (with the objective as given, not as minimised internally): our
+          // convention already
+          solution.row_duals.assign(model->dualRowSolution(),
+                                    model->dualRowSolution() + m);
           solution.objective = lp.objective_value(solution.x);
           solution.message   = "Clp: optimal";
         }

@@ -193,11 +193,23 @@ namespace masonry
         problem = nullptr; // freed by the error hook
       int iterations_before = 0;
 
-      if (result == GLP_ENODFS || result == GLP_EFAIL || result == -1)
+      // a verdict is final if optimal, infeasible or unbounded with a
+      // feasible point (GLPK's primal phase 1 ran), or on the time limit
+      const auto decided = [&]() {
+        if (result == GLP_ENOPFS || result == GLP_ETMLIM)
+          return true;
+        if (result != 0)
+          return false;
+        const int status = glp_get_status(problem);
+        return status == GLP_OPT || status == GLP_NOFEAS ||
+               (status == GLP_UNBND && glp_get_prim_stat(problem) == GLP_FEAS);
+      };
+      if (!decided())
         {
-          // no dual feasible solution (unbounded OR infeasible), or a
-          // failure: solve again without presolve, with the primal simplex
-          // whose phase 1 decides feasibility first
+          // GLP_ENODFS from presolve (unbounded OR infeasible), an undecided
+          // status of the dual simplex, or a failure: solve again without
+          // presolve, with the primal simplex whose phase 1 decides
+          // feasibility first
           if (problem)
             {
               iterations_before = glp_get_it_cnt(problem);

@@ -48,9 +48,10 @@ namespace masonry
       prm.declare_entry("Time limit",
                         "0",
                         dealii::Patterns::Double(0),
-                        "Wall-clock time limit of one LP solve, in seconds; "
-                        "0 means no limit. A solve that reaches the limit "
-                        "reports status `failed'.");
+                        "Time limit of one LP solve, in seconds (as measured "
+                        "by the back-end: CPU time for Clp, wall-clock time "
+                        "for GLPK); 0 means no limit. A solve that reaches "
+                        "the limit reports status `failed'.");
     }
 
     void

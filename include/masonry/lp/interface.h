@@ -125,7 +125,10 @@ namespace masonry
       bool
       export_mps() const;
 
-      /** Time limit of a solve in seconds; 0 means none (`Time limit`). */
+      /**
+       * Time limit of a solve in seconds (CPU time for Clp, wall-clock time
+       * for GLPK); 0 means none (`Time limit`).
+       */
       double
       time_limit() const;
 
