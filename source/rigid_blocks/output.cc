@@ -119,7 +119,15 @@ namespace masonry
             for (const auto &c : i.points)
               max_displacement = std::max(
                 max_displacement, motion.displacement(model, b, c.position).norm());
-      const double tolerance = 1e-6 * max_displacement;
+      // prescribed support motion: jumps below 1e-6 of the larger of the two
+      // scales are round-off of the LP, not cracks
+      double max_support_motion = 0;
+      for (const auto &i : interfaces)
+        if (i.second == Interface::support)
+          for (const auto &c : i.points)
+            max_support_motion = std::max(
+              max_support_motion, settlement(c.position, i.support_label).norm());
+      const double tolerance = 1e-6 * std::max(max_displacement, max_support_motion);
 
       // crack list
       Json         cracks = Json::array();
