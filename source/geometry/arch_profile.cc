@@ -57,9 +57,9 @@ namespace masonry
           p.centre_left   = {{0, zc}};
           p.centre_right  = {{0, zc}};
           p.left =
-            circular_arc(0, zc, p.radius, std::atan2(-zc, -a), 0.5 * M_PI);
+            circular_arc(0, zc, p.radius, std::atan2(0.0 - zc, -a), 0.5 * M_PI);
           p.right =
-            circular_arc(0, zc, p.radius, std::atan2(-zc, a), 0.5 * M_PI);
+            circular_arc(0, zc, p.radius, std::atan2(0.0 - zc, a), 0.5 * M_PI);
         }
       else
         {

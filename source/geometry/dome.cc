@@ -65,11 +65,12 @@ namespace masonry
                                  "half the span."));
         const double R  = (a * a + rise * rise) / (2 * rise);
         const double zc = rise - R;
-        auto meridian   = circular_arc(0, zc, R, std::atan2(-zc, a), M_PI / 2);
-        meridian[0].x   = a;
-        meridian[0].z   = 0;
-        meridian[2].x   = 0;
-        meridian[2].z   = rise;
+        auto         meridian =
+          circular_arc(0, zc, R, std::atan2(0.0 - zc, a), M_PI / 2);
+        meridian[0].x = a;
+        meridian[0].z = 0;
+        meridian[2].x = 0;
+        meridian[2].z = rise;
 
         const std::array<std::string, 4> compass = {
           {"north-east", "north-west", "south-west", "south-east"}};
