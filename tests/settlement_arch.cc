@@ -4,8 +4,8 @@
  *
  * - The work of self weight converges as blocks are added; the reference is
  *   a fine mesh of 256 blocks per half (512 blocks). The error table goes to
- *   convergence.csv in the test's directory; the test asserts that the error decreases monotonically
- *   and is below 1 % from 16 blocks per half on.
+ *   convergence.csv in the test's directory; the test asserts that the error
+ * decreases monotonically and is below 1 % from 16 blocks per half on.
  * - The mechanism has three hinges (rigid-block theory of arches under a
  *   support displacement: a three-hinge mechanism, Ochsendorf 2002).
  * - Clp and GLPK give the same optimum (relative 1e-8).
@@ -24,18 +24,20 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   using namespace vault_tests;
   const double R = 5, t = 1;
-  const double reference =
-    run("arch_ref", arch_prm(R, t, 256, "0; 0; -0.01")).at("external_work").as_number();
+  const double reference = run("arch_ref", arch_prm(R, t, 256, "0; 0; -0.01"))
+                             .at("external_work")
+                             .as_number();
 
-  double previous = 1e300;
-  bool   monotone = true, converged = true, three_hinges = true;
+  double        previous = 1e300;
+  bool          monotone = true, converged = true, three_hinges = true;
   std::ofstream table("convergence.csv"); // the error table, not compared
   table << "blocks per half, work [J], relative error\n";
   for (const unsigned int n : {4u, 8u, 16u, 32u, 64u})
     {
-      const masonry::Json s = run("arch_" + std::to_string(n),
-                                  arch_prm(R, t, n, "0; 0; -0.01"));
-      const double error = relative(s.at("external_work").as_number(), reference);
+      const masonry::Json s =
+        run("arch_" + std::to_string(n), arch_prm(R, t, n, "0; 0; -0.01"));
+      const double error =
+        relative(s.at("external_work").as_number(), reference);
       table << n << ", " << s.at("external_work").as_number() << ", " << error
             << "\n";
       monotone     = monotone && error <= previous;
@@ -44,7 +46,9 @@ main(int argc, char **argv)
       previous     = error;
       if (n == 16)
         {
-          const masonry::Json g = run("arch_glpk", arch_prm(R, t, n, "0; 0; -0.01", "unilateral", "glpk"));
+          const masonry::Json g =
+            run("arch_glpk",
+                arch_prm(R, t, n, "0; 0; -0.01", "unilateral", "glpk"));
           check(relative(g.at("external_work").as_number(),
                          s.at("external_work").as_number()) < 1e-8,
                 "Clp and GLPK agree to 1e-8 (16 blocks per half)");
@@ -54,7 +58,8 @@ main(int argc, char **argv)
   check(converged, "error < 1 % from 16 blocks per half on");
   check(three_hinges, "three hinges on every mesh");
 
-  const masonry::Json thin = run("arch_thin", arch_prm(R, 0.06 * R, 16, "0; 0; 0"));
+  const masonry::Json thin =
+    run("arch_thin", arch_prm(R, 0.06 * R, 16, "0; 0; 0"));
   check(thin.at("status").as_string() == "mechanism",
         "t/R = 0.06 without settlement: mechanism");
   const masonry::Json bonded =

@@ -15,8 +15,9 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   using namespace vault_tests;
   const double R = 3, t = 0.5, L = 4;
-  const double arch =
-    run("arch", arch_prm(R, t, 8, "0; 0; -0.01")).at("external_work").as_number();
+  const double arch = run("arch", arch_prm(R, t, 8, "0; 0; -0.01"))
+                        .at("external_work")
+                        .as_number();
   std::ostringstream prm;
   prm << "set Analysis = settlement\n"
       << "subsection Geometry model\n  set Model name = barrel vault\n"

@@ -46,8 +46,8 @@ namespace
       const double R = prm.get_double("Radius"), D = prm.get_double("Depth");
       TColgp_Array2OfPnt   poles(1, 5, 1, 2);
       TColStd_Array2OfReal weights(1, 5, 1, 2);
-      const double x[5] = {-R, -R, 0, R, R}, z[5] = {0, R, R, R, 0};
-      const double w[5] = {1, std::sqrt(0.5), 1, std::sqrt(0.5), 1};
+      const double         x[5] = {-R, -R, 0, R, R}, z[5] = {0, R, R, R, 0};
+      const double         w[5] = {1, std::sqrt(0.5), 1, std::sqrt(0.5), 1};
       for (int i = 1; i <= 5; ++i)
         for (int j = 1; j <= 2; ++j)
           {
@@ -63,7 +63,7 @@ namespace
       umults(2)             = 2;
       vknots(1)             = 0;
       vknots(2)             = 1;
-      vmults(1) = vmults(2) = 2;
+      vmults(1) = vmults(2)               = 2;
       Handle(Geom_BSplineSurface) surface = new Geom_BSplineSurface(
         poles, weights, uknots, vknots, umults, vmults, 2, 1);
       set_patches({masonry::geometry::make_patch(
@@ -85,7 +85,9 @@ main(int argc, char **argv)
   const double R = 2, D = 0.5, t = 0.3, rho = 1800, g = 9.81, delta = 0.01;
   const double W        = rho * g * M_PI * R * t * D;
   const double expected = W * delta * (R - t / 2) / (2 * R);
-  auto         prm = [&](const std::string &contact, const std::string &solver) {
+  auto         prm      = [&](const std::string &contact,
+                 const std::string &solver,
+                 const unsigned int q = 12) {
     std::ostringstream s;
     s << "set Analysis = settlement\n"
       << "subsection Geometry model\n  set Model name = test arch\n"
@@ -94,6 +96,7 @@ main(int argc, char **argv)
       << "\n    set Depth = " << D << "\n  end\nend\n"
       << "subsection Settlement\n  set Blocks along u = 1\n"
       << "  set Blocks along v = 1\n"
+      << "  set Quadrature points = " << q << "\n"
       << "  set Supported edges = springing left, springing right\n"
       << "  set Settling edges = springing right\n"
       << "  set Settlement = 0; 0; -" << delta << "\n"
@@ -102,6 +105,25 @@ main(int argc, char **argv)
       << "subsection LP solver\n  set Solver = " << solver << "\nend\n";
     return s.str();
   };
+
+  // Gauss quadrature of the block (split at the patch's knot at the crown;
+  // 2 points across the thickness are exact): the weight converges to
+  // W = ρ g π R t D as points are added
+  double previous   = 1;
+  bool   decreasing = true;
+  for (const unsigned int q : {1u, 2u, 4u, 8u, 16u})
+    {
+      const masonry::Json s =
+        vault_tests::run("one_block_q" + std::to_string(q),
+                         prm("unilateral", "clp", q));
+      const double error =
+        vault_tests::relative(s.at("total_weight").as_number(), W);
+      decreasing = decreasing && (error < previous || error < 1e-14);
+      previous   = error;
+    }
+  vault_tests::check(decreasing, "block weight converges with Gauss points");
+  vault_tests::check(previous < 1e-10,
+                     "block weight exact to 1e-10 with 16 points");
 
   for (const std::string solver : {"clp", "glpk"})
     {

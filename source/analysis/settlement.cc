@@ -180,8 +180,8 @@ namespace masonry
       void
       setup(dealii::ParameterHandler &prm) override
       {
-        geometry = plugins::Registry<geometry::Interface>::create(prm);
-        solver   = plugins::Registry<lp::Interface>::create(prm);
+        geometry    = plugins::Registry<geometry::Interface>::create(prm);
+        solver      = plugins::Registry<lp::Interface>::create(prm);
         solver_name = plugins::Registry<lp::Interface>::selected(prm);
         // build once here so that --validate finds bad labels and geometry
         plugins::ParsePathScope scope(section);
@@ -208,16 +208,15 @@ namespace masonry
         pcout << "Linear program: " << lp.n_rows() << " rows, "
               << lp.n_columns() << " columns, " << lp.n_nonzeros()
               << " non-zeros\n";
-        if (solver->export_mps() &&
-            dealii::Utilities::MPI::this_mpi_process(
-              context.mpi_communicator) == 0)
+        if (solver->export_mps() && dealii::Utilities::MPI::this_mpi_process(
+                                      context.mpi_communicator) == 0)
           lp.write_mps(context.output.file("lp.mps"));
 
-        start                         = Clock::now();
-        const lp::Solution solution   = solver->solve(lp);
-        const double seconds_solve    = seconds_since(start);
+        start                            = Clock::now();
+        const lp::Solution solution      = solver->solve(lp);
+        const double       seconds_solve = seconds_since(start);
 
-        Json &summary = context.summary;
+        Json &summary               = context.summary;
         summary["n_blocks"]         = blocks.size();
         summary["n_interfaces"]     = interfaces.size();
         summary["n_contact_points"] = model->n_contact_points();
@@ -240,8 +239,8 @@ namespace masonry
               "loads do positive work without any support motion, so the "
               "vault cannot stand under its own weight on these supports "
               "(too thin, or a support is missing).";
-            pcout << "Result: mechanism — " << summary.at("explanation").as_string()
-                  << "\n";
+            pcout << "Result: mechanism — "
+                  << summary.at("explanation").as_string() << "\n";
             return;
           }
         if (solution.status == lp::Status::infeasible)
@@ -260,17 +259,34 @@ namespace masonry
                     dealii::ExcMessage("the LP solver failed: " +
                                        solution.message));
 
+        // the solver's answer, checked: largest violation of a row bound in
+        // the scaled LP (rows are O(1): unit normals, unit settlement)
+        {
+          const auto activity  = lp.row_activities(solution.x);
+          double     violation = 0;
+          for (unsigned int r = 0; r < activity.size(); ++r)
+            violation = std::max({violation,
+                                  lp.row_lower()[r] - activity[r],
+                                  activity[r] - lp.row_upper()[r]});
+          summary["lp_max_violation"] = violation;
+          if (violation > 1e-6)
+            pcout << "Warning: the LP solution violates a constraint by "
+                  << violation << " (relative to the settlement)\n";
+        }
+
         // undo the scaling: unit settlement, unit weight, rotations × length
-        const double length = model->length_scale();
+        const double         length = model->length_scale();
         rigid_blocks::Motion motion(blocks.size());
         for (unsigned int b = 0; b < blocks.size(); ++b)
           for (unsigned int d = 0; d < 3; ++d)
             {
-              motion.translation[b][d] = solution.x[6 * b + d] * settlement_scale;
+              motion.translation[b][d] =
+                solution.x[6 * b + d] * settlement_scale;
               motion.rotation[b][d] =
                 solution.x[6 * b + 3 + d] * settlement_scale / length;
             }
-        const double work = solution.objective * total_weight * settlement_scale;
+        const double work =
+          solution.objective * total_weight * settlement_scale;
         summary["status"]        = "optimal";
         summary["external_work"] = work;
         pcout << "Result: optimal, external work = " << std::setprecision(6)
@@ -313,8 +329,10 @@ namespace masonry
       {
         extra_force.assign(model->blocks().size(), dealii::Tensor<1, 3>());
         extra_moment.assign(model->blocks().size(), dealii::Tensor<1, 3>());
-        rigid_blocks::integrate_surface_load(
-          *model, surface_load, extra_force, extra_moment);
+        rigid_blocks::integrate_surface_load(*model,
+                                             surface_load,
+                                             extra_force,
+                                             extra_moment);
       }
 
       /** The LP of seed eqs. 5–8, scaled (see the class documentation). */
@@ -334,12 +352,13 @@ namespace masonry
           if (i.second == rigid_blocks::Interface::support)
             for (const auto &c : i.points)
               settlement_scale =
-                std::max(settlement_scale, u0(c.position, i.support_label).norm());
+                std::max(settlement_scale,
+                         u0(c.position, i.support_label).norm());
         if (settlement_scale == 0)
           settlement_scale = 1;
 
-        lp = lp::LinearProgram();
-        lp.maximize = true;
+        lp               = lp::LinearProgram();
+        lp.maximize      = true;
         const double inf = std::numeric_limits<double>::infinity();
         // columns: translation (m / scale) and rotation × length (/ scale)
         for (unsigned int b = 0; b < blocks.size(); ++b)
@@ -349,7 +368,9 @@ namespace masonry
             for (unsigned int d = 0; d < 3; ++d)
               lp.add_column(force[d] / total_weight, -inf, inf);
             for (unsigned int d = 0; d < 3; ++d)
-              lp.add_column(extra_moment[b][d] / (total_weight * length), -inf, inf);
+              lp.add_column(extra_moment[b][d] / (total_weight * length),
+                            -inf,
+                            inf);
           }
 
         // m·v_b(x) for the rigid motion of block b, in scaled columns
@@ -358,14 +379,17 @@ namespace masonry
                                 const dealii::Tensor<1, 3> &m,
                                 const dealii::Point<3>     &x,
                                 const double                sign) {
-          const dealii::Tensor<1, 3> r  = x - blocks[b].centroid;
-          const dealii::Tensor<1, 3> rm = dealii::cross_product_3d(r, m);
+          const dealii::Tensor<1, 3> r = x - blocks[b].centroid;
+          const dealii::Tensor<1, 3> rm =
+            dealii::cross_product_3d(r, m) / length;
+          // entries are O(1); drop the round-off of unit vectors (1e-17),
+          // which would otherwise wreck the solvers' scaling
           for (unsigned int d = 0; d < 3; ++d)
             {
-              if (m[d] != 0)
+              if (std::abs(m[d]) > 1e-13)
                 lp.add_entry(row, 6 * b + d, sign * m[d]);
-              if (rm[d] != 0)
-                lp.add_entry(row, 6 * b + 3 + d, sign * rm[d] / length);
+              if (std::abs(rm[d]) > 1e-13)
+                lp.add_entry(row, 6 * b + 3 + d, sign * rm[d]);
             }
         };
 
@@ -374,15 +398,14 @@ namespace masonry
           for (const auto &c : i.points)
             {
               const std::array<dealii::Tensor<1, 3>, 3> frame = {c.normal,
-                                                                c.across,
-                                                                c.along};
+                                                                 c.across,
+                                                                 c.along};
               if (i.second != rigid_blocks::Interface::support)
                 {
                   // jump = v_second − v_first: opening ≥ 0, no sliding
                   for (unsigned int k = 0; k < 3; ++k)
                     {
-                      const unsigned int row =
-                        lp.add_row(0, k == 0 ? inf : 0);
+                      const unsigned int row = lp.add_row(0, k == 0 ? inf : 0);
                       add_velocity(row, i.second, frame[k], c.position, 1);
                       add_velocity(row, i.first, frame[k], c.position, -1);
                     }
@@ -404,21 +427,21 @@ namespace masonry
             }
       }
 
-      rigid_blocks::Discretisation                 options;
-      std::set<std::string>                        settling_edges;
-      bool                                         bonded = false;
-      dealii::FunctionParser<3>                    settlement{3};
-      dealii::FunctionParser<3>                    surface_load{1};
-      rigid_blocks::OutputOptions                  output_options;
-      std::string                                  section;
-      std::string                                  solver_name;
-      std::unique_ptr<geometry::Interface>         geometry;
-      std::unique_ptr<lp::Interface>               solver;
-      std::unique_ptr<rigid_blocks::BlockModel>    model;
-      std::vector<dealii::Tensor<1, 3>>            extra_force, extra_moment;
-      lp::LinearProgram                            lp;
-      double                                       total_weight     = 1;
-      double                                       settlement_scale = 1;
+      rigid_blocks::Discretisation              options;
+      std::set<std::string>                     settling_edges;
+      bool                                      bonded = false;
+      dealii::FunctionParser<3>                 settlement{3};
+      dealii::FunctionParser<3>                 surface_load{1};
+      rigid_blocks::OutputOptions               output_options;
+      std::string                               section;
+      std::string                               solver_name;
+      std::unique_ptr<geometry::Interface>      geometry;
+      std::unique_ptr<lp::Interface>            solver;
+      std::unique_ptr<rigid_blocks::BlockModel> model;
+      std::vector<dealii::Tensor<1, 3>>         extra_force, extra_moment;
+      lp::LinearProgram                         lp;
+      double                                    total_weight     = 1;
+      double                                    settlement_scale = 1;
     };
   } // namespace analysis
 } // namespace masonry

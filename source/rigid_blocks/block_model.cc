@@ -47,15 +47,16 @@ namespace masonry
       /** Derivatives of the unit normal by central differences (the step
        * keeps the error near 1e-10 of the curvature). */
       std::array<dealii::Tensor<1, 3>, 2>
-      normal_derivatives(const geometry::Patch &patch, const dealii::Point<2> &uv)
+      normal_derivatives(const geometry::Patch  &patch,
+                         const dealii::Point<2> &uv)
       {
-        const double h = 1e-6;
+        const double                        h = 1e-6;
         std::array<dealii::Tensor<1, 3>, 2> dn;
         for (unsigned int d = 0; d < 2; ++d)
           {
             dealii::Point<2> a = uv, b = uv;
-            a[d] = std::max(0.0, uv[d] - h);
-            b[d] = std::min(1.0, uv[d] + h);
+            a[d]  = std::max(0.0, uv[d] - h);
+            b[d]  = std::min(1.0, uv[d] + h);
             dn[d] = (patch.normal(b) - patch.normal(a)) / (b[d] - a[d]);
           }
         return dn;
@@ -65,13 +66,14 @@ namespace masonry
       std::vector<double>
       unit_knots(const geometry::Patch &patch, const unsigned int d)
       {
-        const geometry::PatchSurface &s = patch.surface();
+        const geometry::PatchSurface &s      = patch.surface();
         const Handle(Geom_BSplineSurface) &b = s.bspline;
         const int    n  = d == 0 ? b->NbUKnots() : b->NbVKnots();
         const double lo = d == 0 ? s.u0 : s.v0, hi = d == 0 ? s.u1 : s.v1;
         std::vector<double> knots;
         for (int i = 1; i <= n; ++i)
-          knots.push_back(((d == 0 ? b->UKnot(i) : b->VKnot(i)) - lo) / (hi - lo));
+          knots.push_back(((d == 0 ? b->UKnot(i) : b->VKnot(i)) - lo) /
+                          (hi - lo));
         return knots;
       }
 
@@ -91,9 +93,9 @@ namespace masonry
     std::vector<std::pair<dealii::Point<2>, double>>
     BlockModel::quadrature(const unsigned int b) const
     {
-      const Block                           &block = block_list[b];
-      const auto                            &c     = block.corners;
-      const dealii::QGauss<1>                gauss(options.n_quadrature);
+      const Block            &block = block_list[b];
+      const auto             &c     = block.corners;
+      const dealii::QGauss<1> gauss(options.n_quadrature);
       std::vector<std::pair<dealii::Point<2>, double>> points;
       const bool axis_aligned = c[0][1] == c[1][1] && c[2][1] == c[3][1] &&
                                 c[0][0] == c[2][0] && c[1][0] == c[3][0];
@@ -107,8 +109,9 @@ namespace masonry
               for (unsigned int p = 0; p < gauss.size(); ++p)
                 for (unsigned int q = 0; q < gauss.size(); ++q)
                   points.emplace_back(
-                    dealii::Point<2>(u[i] + gauss.point(p)[0] * (u[i + 1] - u[i]),
-                                     v[j] + gauss.point(q)[0] * (v[j + 1] - v[j])),
+                    dealii::Point<2>(
+                      u[i] + gauss.point(p)[0] * (u[i + 1] - u[i]),
+                      v[j] + gauss.point(q)[0] * (v[j + 1] - v[j])),
                     gauss.weight(p) * gauss.weight(q) * (u[i + 1] - u[i]) *
                       (v[j + 1] - v[j]));
           return points;
@@ -199,9 +202,9 @@ namespace masonry
                             const dealii::Point<2> &reference,
                             const double            zeta) const
     {
-      const Block            &block = block_list[b];
-      const geometry::Patch  &patch = geom.patches()[block.patch];
-      const dealii::Point<2>  uv =
+      const Block           &block = block_list[b];
+      const geometry::Patch &patch = geom.patches()[block.patch];
+      const dealii::Point<2> uv =
         cell_point(block.corners, reference[0], reference[1]);
       const dealii::Point<3> x = patch.point(uv);
       return x + zeta * geom.thickness(x) * patch.normal(uv);
@@ -236,26 +239,26 @@ namespace masonry
         size = lo.distance(hi);
       }
 
-      const double            zeta_gauss[2] = {-0.5 / std::sqrt(3.), 0.5 / std::sqrt(3.)};
-      const double            rho_g = geom.density() * gravity;
+      const double zeta_gauss[2] = {-0.5 / std::sqrt(3.), 0.5 / std::sqrt(3.)};
+      const double rho_g         = geom.density() * gravity;
 
       // one parameter-space triangulation per patch: cells are blocks,
       // faces are interfaces (boundary ids 0..3: edges u=0, u=1, v=0, v=1)
       struct BoundaryFace
       {
-        unsigned int                     block;
-        unsigned int                     patch;
-        unsigned int                     edge;
+        unsigned int                    block;
+        unsigned int                    patch;
+        unsigned int                    edge;
         std::array<dealii::Point<2>, 2> uv;
         std::array<dealii::Point<3>, 3> x; // ends and midpoint
-        dealii::Point<2>                 outward;
+        dealii::Point<2>                outward;
       };
       std::vector<BoundaryFace> boundary_faces;
       struct InnerFace
       {
-        unsigned int                     first, second;
+        unsigned int                    first, second;
         std::array<dealii::Point<2>, 2> uv;
-        dealii::Point<2>                 outward;
+        dealii::Point<2>                outward;
       };
       std::vector<InnerFace> inner_faces;
 
@@ -294,15 +297,16 @@ namespace masonry
                   const dealii::Point<3> s  = patches[p].point(uv);
                   const auto             ts = patches[p].tangents(uv);
                   const auto             n  = patches[p].normal(uv);
-                  const auto             dn = normal_derivatives(patches[p], uv);
-                  const double           t  = geom.thickness(s);
+                  const auto   dn = normal_derivatives(patches[p], uv);
+                  const double t  = geom.thickness(s);
                   for (const double zeta : zeta_gauss)
                     {
                       // det[x_u, x_v, x_zeta] with x = s + zeta t n; the
                       // zeta t_u n terms are parallel to x_zeta and drop
-                      const double jac = std::abs(
-                        t * (n * dealii::cross_product_3d(ts[0] + zeta * t * dn[0],
-                                                          ts[1] + zeta * t * dn[1])));
+                      const double jac =
+                        std::abs(t * (n * dealii::cross_product_3d(
+                                            ts[0] + zeta * t * dn[0],
+                                            ts[1] + zeta * t * dn[1])));
                       const dealii::Point<3> x = s + zeta * t * n;
                       volume += 0.5 * w * jac;
                       first_moment += 0.5 * w * jac * x;
@@ -326,47 +330,52 @@ namespace masonry
                 // outward direction of the face in parameter space
                 dealii::Point<2> outward;
                 outward[f / 2] = (f % 2 == 0) ? -1. : 1.;
-                const std::array<dealii::Point<2>, 2> uv = {cell->face(f)->vertex(0),
-                                                            cell->face(f)->vertex(1)};
+                const std::array<dealii::Point<2>, 2> uv = {
+                  cell->face(f)->vertex(0), cell->face(f)->vertex(1)};
                 const unsigned int b = offset + cell->active_cell_index();
                 if (cell->at_boundary(f))
                   {
-                    BoundaryFace bf{b, p, cell->face(f)->boundary_id(), uv, {}, outward};
+                    BoundaryFace bf{
+                      b, p, cell->face(f)->boundary_id(), uv, {}, outward};
                     bf.x[0] = patches[p].point(uv[0]);
                     bf.x[1] = patches[p].point(uv[1]);
-                    bf.x[2] = patches[p].point(dealii::Point<2>(0.5 * (uv[0] + uv[1])));
+                    bf.x[2] =
+                      patches[p].point(dealii::Point<2>(0.5 * (uv[0] + uv[1])));
                     boundary_faces.push_back(bf);
                   }
                 else if (cell->neighbor(f)->active_cell_index() >
                          cell->active_cell_index())
                   inner_faces.push_back(
-                    {b, offset + cell->neighbor(f)->active_cell_index(), uv, outward});
+                    {b,
+                     offset + cell->neighbor(f)->active_cell_index(),
+                     uv,
+                     outward});
               }
         }
 
       // Contact points of an interface along the edge uv[0] -> uv[1] of a
       // block of patch p; the normal points along the parameter-space
       // direction `outward` mapped to 3D (out of block `first`).
-      auto make_interface = [&](const unsigned int                    p,
+      auto make_interface = [&](const unsigned int                     p,
                                 const std::array<dealii::Point<2>, 2> &uv,
                                 const dealii::Point<2>                &outward,
                                 const unsigned int                     first,
                                 const unsigned int                     second) {
-        Interface     interface;
-        interface.first  = first;
-        interface.second = second;
-        interface.area   = 0;
-        const unsigned int    n = options.n_stations;
+        Interface interface;
+        interface.first              = first;
+        interface.second             = second;
+        interface.area               = 0;
+        const unsigned int     n     = options.n_stations;
         const geometry::Patch &patch = patches[p];
-        dealii::Tensor<1, 3>  centre;
+        dealii::Tensor<1, 3>   centre;
         for (unsigned int k = 0; k < n; ++k)
           {
-            const double           s  = double(k) / (n - 1);
-            const dealii::Point<2> q  = uv[0] + s * (uv[1] - uv[0]);
-            const dealii::Point<3> x  = patch.point(q);
-            const auto             ts = patch.tangents(q);
-            const auto             ns = patch.normal(q);
-            const double           t  = geom.thickness(x);
+            const double               s  = double(k) / (n - 1);
+            const dealii::Point<2>     q  = uv[0] + s * (uv[1] - uv[0]);
+            const dealii::Point<3>     x  = patch.point(q);
+            const auto                 ts = patch.tangents(q);
+            const auto                 ns = patch.normal(q);
+            const double               t  = geom.thickness(x);
             const dealii::Tensor<1, 3> edge =
               ts[0] * (uv[1][0] - uv[0][0]) + ts[1] * (uv[1][1] - uv[0][1]);
             dealii::Tensor<1, 3> normal = dealii::cross_product_3d(edge, ns);
@@ -374,11 +383,13 @@ namespace masonry
             if (norm == 0)
               continue;
             normal /= norm;
-            const dealii::Tensor<1, 3> out = ts[0] * outward[0] + ts[1] * outward[1];
+            const dealii::Tensor<1, 3> out =
+              ts[0] * outward[0] + ts[1] * outward[1];
             if (normal * out < 0)
               normal = -normal;
             // trapezoidal weight of the station along the edge
-            const double weight = edge.norm() / (n - 1) * ((k == 0 || k == n - 1) ? 0.5 : 1.0);
+            const double weight =
+              edge.norm() / (n - 1) * ((k == 0 || k == n - 1) ? 0.5 : 1.0);
             for (const bool intrados : {true, false})
               {
                 ContactPoint c;
@@ -401,11 +412,12 @@ namespace masonry
       };
 
       for (const auto &f : inner_faces)
-        make_interface(block_list[f.first].patch, f.uv, f.outward, f.first, f.second);
+        make_interface(
+          block_list[f.first].patch, f.uv, f.outward, f.first, f.second);
 
       // boundary faces: glued to another patch's face, on a support, or free
-      const double       tolerance = 1e-8 * size;
-      std::vector<bool>  used(boundary_faces.size(), false);
+      const double      tolerance = 1e-8 * size;
+      std::vector<bool> used(boundary_faces.size(), false);
       for (unsigned int a = 0; a < boundary_faces.size(); ++a)
         {
           if (used[a])
@@ -420,16 +432,16 @@ namespace masonry
               const auto &fb = boundary_faces[b];
               if (used[b] || fa.block == fb.block)
                 continue;
-              const bool same =
-                fa.x[2].distance(fb.x[2]) < tolerance &&
-                ((fa.x[0].distance(fb.x[0]) < tolerance &&
-                  fa.x[1].distance(fb.x[1]) < tolerance) ||
-                 (fa.x[0].distance(fb.x[1]) < tolerance &&
-                  fa.x[1].distance(fb.x[0]) < tolerance));
+              const bool same = fa.x[2].distance(fb.x[2]) < tolerance &&
+                                ((fa.x[0].distance(fb.x[0]) < tolerance &&
+                                  fa.x[1].distance(fb.x[1]) < tolerance) ||
+                                 (fa.x[0].distance(fb.x[1]) < tolerance &&
+                                  fa.x[1].distance(fb.x[0]) < tolerance));
               if (same)
                 {
                   used[a] = used[b] = true;
-                  make_interface(fa.patch, fa.uv, fa.outward, fa.block, fb.block);
+                  make_interface(
+                    fa.patch, fa.uv, fa.outward, fa.block, fb.block);
                   break;
                 }
             }
@@ -443,7 +455,8 @@ namespace masonry
           if (used[a] || options.supported_edges.count(label) == 0)
             continue;
           const unsigned int before = interface_list.size();
-          make_interface(fa.patch, fa.uv, fa.outward, fa.block, Interface::support);
+          make_interface(
+            fa.patch, fa.uv, fa.outward, fa.block, Interface::support);
           if (interface_list.size() > before)
             interface_list.back().support_label = label;
         }
@@ -452,10 +465,11 @@ namespace masonry
           std::string known;
           for (const auto &l : labels_found)
             known += (known.empty() ? "" : ", ") + l;
-          AssertThrow(labels_found.count(label) > 0,
-                      ExcParameter("Supported edges",
-                                   "no free edge of the geometry is labelled '" +
-                                     label + "'; the edges are: " + known));
+          AssertThrow(
+            labels_found.count(label) > 0,
+            ExcParameter("Supported edges",
+                         "no free edge of the geometry is labelled '" + label +
+                           "'; the edges are: " + known));
         }
     }
   } // namespace rigid_blocks

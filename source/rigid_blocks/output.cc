@@ -41,7 +41,8 @@ namespace masonry
           for (const auto &[uv, w] : model.quadrature(b))
             {
               const auto   ts = patches[block.patch].tangents(uv);
-              const double dA = dealii::cross_product_3d(ts[0], ts[1]).norm() * w;
+              const double dA =
+                dealii::cross_product_3d(ts[0], ts[1]).norm() * w;
               const dealii::Point<3> x    = patches[block.patch].point(uv);
               const double           load = q.value(x);
               if (load == 0)
@@ -58,9 +59,9 @@ namespace masonry
     {
       /** Jump of the motion at contact point @p c of interface @p i. */
       dealii::Tensor<1, 3>
-      jump(const BlockModel &model,
-           const Motion     &motion,
-           const Interface  &i,
+      jump(const BlockModel   &model,
+           const Motion       &motion,
+           const Interface    &i,
            const ContactPoint &c,
            const std::function<dealii::Tensor<1, 3>(const dealii::Point<3> &,
                                                     const std::string &)>
@@ -76,7 +77,8 @@ namespace masonry
       }
 
       void
-      write_vtu_header(std::ostream &out, const unsigned int n_points,
+      write_vtu_header(std::ostream      &out,
+                       const unsigned int n_points,
                        const unsigned int n_cells)
       {
         out << "<?xml version=\"1.0\"?>\n"
@@ -91,7 +93,10 @@ namespace masonry
       {
         std::string out;
         for (const char c : s)
-          out += (c == '&') ? "&amp;" : (c == '<') ? "&lt;" : (c == '>') ? "&gt;" : std::string(1, c);
+          out += (c == '&') ? "&amp;" :
+                 (c == '<') ? "&lt;" :
+                 (c == '>') ? "&gt;" :
+                              std::string(1, c);
         return out;
       }
     } // namespace
@@ -101,7 +106,8 @@ namespace masonry
       const BlockModel &model,
       const Motion     &motion,
       const std::function<dealii::Tensor<1, 3>(const dealii::Point<3> &,
-                                               const std::string &)> &settlement,
+                                               const std::string &)>
+                                               &settlement,
       const std::vector<std::array<double, 3>> &forces,
       const OutputOptions                      &options,
       RunContext                               &context)
@@ -117,27 +123,30 @@ namespace masonry
         for (const auto &i : interfaces)
           if (i.first == b)
             for (const auto &c : i.points)
-              max_displacement = std::max(
-                max_displacement, motion.displacement(model, b, c.position).norm());
+              max_displacement =
+                std::max(max_displacement,
+                         motion.displacement(model, b, c.position).norm());
       // prescribed support motion: jumps below 1e-6 of the larger of the two
       // scales are round-off of the LP, not cracks
       double max_support_motion = 0;
       for (const auto &i : interfaces)
         if (i.second == Interface::support)
           for (const auto &c : i.points)
-            max_support_motion = std::max(
-              max_support_motion, settlement(c.position, i.support_label).norm());
-      const double tolerance = 1e-6 * std::max(max_displacement, max_support_motion);
+            max_support_motion =
+              std::max(max_support_motion,
+                       settlement(c.position, i.support_label).norm());
+      const double tolerance =
+        1e-6 * std::max(max_displacement, max_support_motion);
 
       // crack list
-      Json         cracks = Json::array();
-      unsigned int n_hinges = 0;
+      Json                cracks   = Json::array();
+      unsigned int        n_hinges = 0;
       std::vector<double> interface_opening(interfaces.size(), 0.0);
       for (unsigned int k = 0; k < interfaces.size(); ++k)
         {
           const Interface &i           = interfaces[k];
           double           max_opening = 0, min_opening = 0, max_jump = 0;
-          bool             first       = true;
+          bool             first = true;
           for (const auto &c : i.points)
             {
               const auto   j       = jump(model, motion, i, c, settlement);
@@ -155,17 +164,18 @@ namespace masonry
                                               motion.rotation[i.second]) -
             motion.rotation[i.first];
           const std::string type =
-            min_opening <= tolerance ? (max_opening > tolerance ? "hinge" : "slip") :
-                                       "separation";
+            min_opening <= tolerance ?
+              (max_opening > tolerance ? "hinge" : "slip") :
+              "separation";
           if (type == "hinge")
             ++n_hinges;
-          Json crack = Json::object();
-          crack["interface"] = k;
+          Json crack           = Json::object();
+          crack["interface"]   = k;
           crack["first_block"] = i.first;
           crack["second"]      = i.second == Interface::support ?
                                    Json("support: " + i.support_label) :
                                    Json(i.second);
-          Json position = Json::array();
+          Json position        = Json::array();
           for (unsigned int d = 0; d < 3; ++d)
             position.push_back(i.centre[d]);
           crack["position"]          = position;
@@ -194,15 +204,16 @@ namespace masonry
         for (unsigned int k = 0; k < interfaces.size(); ++k)
           for (const auto &c : interfaces[k].points)
             {
-              const auto f = p < forces.size() ? forces[p] : std::array<double, 3>{};
+              const auto f =
+                p < forces.size() ? forces[p] : std::array<double, 3>{};
               ++p;
               csv << k << "," << interfaces[k].first << ","
                   << (interfaces[k].second == Interface::support ?
                         std::string("support") :
                         std::to_string(interfaces[k].second))
                   << "," << c.position[0] << "," << c.position[1] << ","
-                  << c.position[2] << "," << (c.intrados ? 1 : 0) << ","
-                  << f[0] << "," << f[1] << "," << f[2] << "\n";
+                  << c.position[2] << "," << (c.intrados ? 1 : 0) << "," << f[0]
+                  << "," << f[1] << "," << f[2] << "\n";
             }
       }
 
@@ -210,12 +221,14 @@ namespace masonry
       const double amplification =
         options.amplification > 0 ?
           options.amplification :
-          (max_displacement > 0 ? 0.05 * model.length_scale() / max_displacement : 1.0);
+          (max_displacement > 0 ?
+             0.05 * model.length_scale() / max_displacement :
+             1.0);
       context.summary["displacement_amplification"] = amplification;
 
       // blocks: curved hexahedra sampled in parameter space
       {
-        const unsigned int k        = options.subdivisions;
+        const unsigned int k         = options.subdivisions;
         const unsigned int per_block = (k + 1) * (k + 1) * 2;
         std::ofstream      out(dir.file("blocks.vtu"));
         out << std::setprecision(10);
@@ -227,8 +240,11 @@ namespace masonry
             for (unsigned int j = 0; j <= k; ++j)
               for (unsigned int i = 0; i <= k; ++i)
                 {
-                  const dealii::Point<3> x = model.solid_point(
-                    b, dealii::Point<2>(double(i) / k, double(j) / k), z == 0 ? -0.5 : 0.5);
+                  const dealii::Point<3> x =
+                    model.solid_point(b,
+                                      dealii::Point<2>(double(i) / k,
+                                                       double(j) / k),
+                                      z == 0 ? -0.5 : 0.5);
                   points.push_back(x);
                   displacement.push_back(motion.displacement(model, b, x));
                 }
@@ -236,21 +252,24 @@ namespace masonry
                "format=\"ascii\">\n";
         for (unsigned int p = 0; p < points.size(); ++p)
           {
-            const dealii::Point<3> y = points[p] + amplification * displacement[p];
+            const dealii::Point<3> y =
+              points[p] + amplification * displacement[p];
             out << y[0] << " " << y[1] << " " << y[2] << "\n";
           }
         out << "</DataArray></Points>\n<Cells>\n<DataArray type=\"Int64\" "
                "Name=\"connectivity\" format=\"ascii\">\n";
-        auto id = [&](unsigned int b, unsigned int i, unsigned int j, unsigned int z) {
-          return b * per_block + z * (k + 1) * (k + 1) + j * (k + 1) + i;
-        };
+        auto id =
+          [&](unsigned int b, unsigned int i, unsigned int j, unsigned int z) {
+            return b * per_block + z * (k + 1) * (k + 1) + j * (k + 1) + i;
+          };
         for (unsigned int b = 0; b < blocks.size(); ++b)
           for (unsigned int j = 0; j < k; ++j)
             for (unsigned int i = 0; i < k; ++i)
               out << id(b, i, j, 0) << " " << id(b, i + 1, j, 0) << " "
                   << id(b, i + 1, j + 1, 0) << " " << id(b, i, j + 1, 0) << " "
                   << id(b, i, j, 1) << " " << id(b, i + 1, j, 1) << " "
-                  << id(b, i + 1, j + 1, 1) << " " << id(b, i, j + 1, 1) << "\n";
+                  << id(b, i + 1, j + 1, 1) << " " << id(b, i, j + 1, 1)
+                  << "\n";
         out << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" "
                "format=\"ascii\">\n";
         for (unsigned int c = 1; c <= blocks.size() * k * k; ++c)
@@ -259,8 +278,9 @@ namespace masonry
                "format=\"ascii\">\n";
         for (unsigned int c = 0; c < blocks.size() * k * k; ++c)
           out << "12\n";
-        out << "</DataArray>\n</Cells>\n<CellData Scalars=\"block_id\">\n"
-            << "<DataArray type=\"Int32\" Name=\"block_id\" format=\"ascii\">\n";
+        out
+          << "</DataArray>\n</Cells>\n<CellData Scalars=\"block_id\">\n"
+          << "<DataArray type=\"Int32\" Name=\"block_id\" format=\"ascii\">\n";
         for (unsigned int b = 0; b < blocks.size(); ++b)
           for (unsigned int c = 0; c < k * k; ++c)
             out << b << "\n";
@@ -269,9 +289,10 @@ namespace masonry
         for (unsigned int b = 0; b < blocks.size(); ++b)
           for (unsigned int c = 0; c < k * k; ++c)
             out << blocks[b].patch << "\n";
-        out << "</DataArray>\n</CellData>\n<PointData Vectors=\"displacement\">\n"
-            << "<DataArray type=\"Float64\" Name=\"displacement\" "
-               "NumberOfComponents=\"3\" format=\"ascii\">\n";
+        out
+          << "</DataArray>\n</CellData>\n<PointData Vectors=\"displacement\">\n"
+          << "<DataArray type=\"Float64\" Name=\"displacement\" "
+             "NumberOfComponents=\"3\" format=\"ascii\">\n";
         for (const auto &d : displacement)
           out << d[0] << " " << d[1] << " " << d[2] << "\n";
         out << "</DataArray>\n</PointData>\n</Piece>\n</UnstructuredGrid>\n"
@@ -280,20 +301,21 @@ namespace masonry
 
       // interfaces: quads between stations, on the first block's side
       {
-        std::vector<dealii::Point<3>> points;
+        std::vector<dealii::Point<3>>            points;
         std::vector<std::array<unsigned int, 4>> quads;
-        std::vector<double> opening, normal_force;
-        unsigned int        p = 0;
+        std::vector<double>                      opening, normal_force;
+        unsigned int                             p = 0;
         for (unsigned int k = 0; k < interfaces.size(); ++k)
           {
-            const Interface &i     = interfaces[k];
-            const unsigned int base = points.size();
-            double           force = 0;
+            const Interface   &i     = interfaces[k];
+            const unsigned int base  = points.size();
+            double             force = 0;
             for (const auto &c : i.points)
               {
-                points.push_back(c.position +
-                                 amplification *
-                                   motion.displacement(model, i.first, c.position));
+                points.push_back(
+                  c.position + amplification * motion.displacement(model,
+                                                                   i.first,
+                                                                   c.position));
                 if (p < forces.size())
                   force += forces[p][0];
                 ++p;
@@ -301,7 +323,8 @@ namespace masonry
             // points come in (intrados, extrados) pairs per station
             for (unsigned int s = 0; s + 3 < i.points.size(); s += 2)
               {
-                quads.push_back({base + s, base + s + 2, base + s + 3, base + s + 1});
+                quads.push_back(
+                  {base + s, base + s + 2, base + s + 3, base + s + 1});
                 opening.push_back(interface_opening[k]);
                 normal_force.push_back(force);
               }
@@ -325,8 +348,9 @@ namespace masonry
                "format=\"ascii\">\n";
         for (unsigned int c = 0; c < quads.size(); ++c)
           out << "9\n";
-        out << "</DataArray>\n</Cells>\n<CellData Scalars=\"opening\">\n"
-            << "<DataArray type=\"Float64\" Name=\"opening\" format=\"ascii\">\n";
+        out
+          << "</DataArray>\n</Cells>\n<CellData Scalars=\"opening\">\n"
+          << "<DataArray type=\"Float64\" Name=\"opening\" format=\"ascii\">\n";
         for (const double o : opening)
           out << o << "\n";
         out << "</DataArray>\n<DataArray type=\"Float64\" "
@@ -339,11 +363,12 @@ namespace masonry
 
       {
         std::ofstream pvd(dir.file("vault.pvd"));
-        pvd << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" "
-               "version=\"0.1\">\n<Collection>\n"
-            << "<DataSet timestep=\"0\" part=\"0\" file=\"blocks.vtu\" name=\"blocks\"/>\n"
-            << "<DataSet timestep=\"0\" part=\"1\" file=\"interfaces.vtu\" "
-               "name=\"interfaces\"/>\n</Collection>\n</VTKFile>\n";
+        pvd
+          << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" "
+             "version=\"0.1\">\n<Collection>\n"
+          << "<DataSet timestep=\"0\" part=\"0\" file=\"blocks.vtu\" name=\"blocks\"/>\n"
+          << "<DataSet timestep=\"0\" part=\"1\" file=\"interfaces.vtu\" "
+             "name=\"interfaces\"/>\n</Collection>\n</VTKFile>\n";
       }
 
       if (options.write_picture)
@@ -351,12 +376,14 @@ namespace masonry
           const std::string script =
             std::string(MASONRY_SOURCE_DIR) + "/contrib/plot/vault_picture.py";
           const std::string python = "/usr/bin/python3";
-          if (std::filesystem::exists(script) && std::filesystem::exists(python))
+          if (std::filesystem::exists(script) &&
+              std::filesystem::exists(python))
             {
               const std::string png = dir.path() + "vault.png";
               const std::string command =
                 python + " '" + script + "' '" + dir.path() + "blocks.vtu' '" +
-                png + "' '" + xml_escape(context.summary.at("analysis").as_string()) +
+                png + "' '" +
+                xml_escape(context.summary.at("analysis").as_string()) +
                 "' > /dev/null 2>&1";
               if (std::system(command.c_str()) == 0)
                 dir.file("vault.png");
@@ -365,8 +392,8 @@ namespace masonry
                                  "failed; install python3-matplotlib)\n";
             }
           else
-            context.pcout << "Note: vault.png not written (" << script
-                          << " or " << python << " not found)\n";
+            context.pcout << "Note: vault.png not written (" << script << " or "
+                          << python << " not found)\n";
         }
     }
   } // namespace rigid_blocks

@@ -130,8 +130,8 @@ namespace masonry
        * patch, the (n_u + 1) × (n_v + 1) vertices in lexicographic order
        * (u fastest) of a structured mesh of its unit square.
        */
-      BlockModel(const geometry::Interface                     &geometry,
-                 const Discretisation                          &options,
+      BlockModel(const geometry::Interface                        &geometry,
+                 const Discretisation                             &options,
                  const std::vector<std::vector<dealii::Point<2>>> &vertices);
 
       /** The blocks. */
@@ -186,12 +186,12 @@ namespace masonry
       void
       build();
 
-      const geometry::Interface                  &geom;
-      Discretisation                              options;
+      const geometry::Interface                 &geom;
+      Discretisation                             options;
       std::vector<std::vector<dealii::Point<2>>> vertices;
-      std::vector<Block>                          block_list;
-      std::vector<Interface>                      interface_list;
-      double                                      size;
+      std::vector<Block>                         block_list;
+      std::vector<Interface>                     interface_list;
+      double                                     size;
     };
 
     /**

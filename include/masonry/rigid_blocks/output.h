@@ -72,7 +72,8 @@ namespace masonry
       const BlockModel &model,
       const Motion     &motion,
       const std::function<dealii::Tensor<1, 3>(const dealii::Point<3> &,
-                                               const std::string &)> &settlement,
+                                               const std::string &)>
+                                               &settlement,
       const std::vector<std::array<double, 3>> &forces,
       const OutputOptions                      &options,
       RunContext                               &context);
