@@ -74,6 +74,8 @@ namespace masonry
     {
       dealii::ParameterHandler prm;
       declare_driver_parameters(prm);
+      // for the location in the error message of a library that is missing
+      record_parameter_locations(file);
       prm.parse_input(file, "", true);
       const auto libraries = dealii::Utilities::split_string_list(
         prm.get("Additional shared libraries"), ',');
@@ -117,7 +119,14 @@ namespace masonry
       load_shared_libraries(file);
       declare_all_parameters(prm);
       record_parameter_locations(file);
-      prm.parse_input(file);
+      try
+        {
+          prm.parse_input(file);
+        }
+      catch (const std::exception &exc)
+        {
+          throw dealii::ExcMessage(explain_parse_error(one_line_message(exc)));
+        }
     }
 
     /** Create and set up the analysis: every input check happens here. */

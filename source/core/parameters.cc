@@ -5,6 +5,7 @@
 
 #include <fstream>
 #include <map>
+#include <regex>
 #include <sstream>
 
 namespace masonry
@@ -94,6 +95,57 @@ namespace masonry
     if (it == l.line_of_entry.end())
       return l.filename + " (default value)";
     return l.filename + ":" + std::to_string(it->second);
+  }
+
+  std::string
+  parameter_at_line(const unsigned int line)
+  {
+    for (const auto &entry : locations().line_of_entry)
+      if (entry.second == line)
+        return entry.first;
+    return "";
+  }
+
+  std::string
+  explain_parse_error(const std::string &message)
+  {
+    const std::string &file = locations().filename;
+    if (file.empty() || message.rfind(file + ":", 0) != 0)
+      return message;
+    const std::size_t colon = message.find(':', file.size() + 1);
+    if (colon == std::string::npos)
+      return message;
+    unsigned int line = 0;
+    try
+      {
+        line = dealii::Utilities::string_to_int(
+          message.substr(file.size() + 1, colon - file.size() - 1));
+      }
+    catch (...)
+      {
+        return message;
+      }
+    const std::string path = parameter_at_line(line);
+    std::string       text = trim(message.substr(colon + 1));
+    if (path.empty())
+      return message;
+
+    std::smatch match;
+    if (std::regex_match(text,
+                         match,
+                         std::regex("No entry with name <.*> was declared in "
+                                    "the current subsection\\.?")))
+      text = "no such entry is declared here (misspelt, or in the wrong "
+             "subsection? masonry --print-parameters lists every entry)";
+    else if (std::regex_match(text,
+                              match,
+                              std::regex("The entry value (.*) for the entry "
+                                         "named .* does not match the given "
+                                         "pattern:? ?(.*)")))
+      text = "the value '" + match[1].str() + "' does not match the pattern " +
+             match[2].str();
+    return file + ":" + std::to_string(line) + ": entry '" + path +
+           "': " + text;
   }
 
   dealii::ExcMessage

@@ -31,6 +31,22 @@ namespace masonry
   parameter_location(const std::string &full_path);
 
   /**
+   * The full path of the entry set on line @p line of the file given to
+   * record_parameter_locations(), or "" if no `set` stands on that line.
+   */
+  std::string
+  parameter_at_line(const unsigned int line);
+
+  /**
+   * Reword an error of dealii::ParameterHandler::parse_input(), already in
+   * one line as "file:line: text" (see one_line_message()), so that it names
+   * the full path of the entry set on that line and says what is wrong in
+   * plain words: an unknown entry, a value not matching its pattern.
+   */
+  std::string
+  explain_parse_error(const std::string &message);
+
+  /**
    * The exception for a value that passes its pattern but is still wrong
    * (a negative span, a missing CAD file, ...). @p entry is the name of an
    * entry of the subsection being parsed; the message names the file, the
