@@ -47,8 +47,10 @@ main(int argc, char **argv)
       const masonry::Json j = masonry::Json::parse(json.out);
       std::cout << "  parses as JSON: yes\n"
                 << "  Analysis: value '"
-                << j.at("Analysis").at("value").as_string() << "', pattern description '"
-                << j.at("Analysis").at("pattern_description").as_string() << "'\n"
+                << j.at("Analysis").at("value").as_string()
+                << "', pattern description '"
+                << j.at("Analysis").at("pattern_description").as_string()
+                << "'\n"
                 << "  Test/Length: default '"
                 << j.at("Test").at("Length").at("default_value").as_string()
                 << "', documentation '"
