@@ -91,7 +91,21 @@ namespace masonry
                 << " m at the point (" << x << "); it must be positive.";
           AssertThrow(false, ExcParameter("Thickness", where.str()));
         }
-      return t;
+      return factor * t;
+    }
+
+    void
+    Interface::set_thickness_factor(const double f)
+    {
+      AssertThrow(f > 0 && std::isfinite(f),
+                  dealii::ExcMessage("the thickness factor must be positive"));
+      factor = f;
+    }
+
+    double
+    Interface::thickness_factor() const
+    {
+      return factor;
     }
 
     double

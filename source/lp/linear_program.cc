@@ -144,6 +144,16 @@ namespace masonry
       return cost.size() - 1;
     }
 
+    void
+    LinearProgram::set_cost(const unsigned int column, const double cost_value)
+    {
+      AssertThrow(column < cost.size() && std::isfinite(cost_value),
+                  dealii::ExcMessage("LinearProgram: set_cost of a column "
+                                     "that does not exist or to a value "
+                                     "that is not finite."));
+      cost[column] = cost_value;
+    }
+
     unsigned int
     LinearProgram::add_row(const double       lower,
                            const double       upper,

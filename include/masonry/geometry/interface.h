@@ -73,6 +73,17 @@ namespace masonry
       double
       thickness(const dealii::Point<3> &x) const;
 
+      /**
+       * Multiply the thickness everywhere by @p f > 0 (used by the minimum
+       * thickness analysis; 1 after parsing).
+       */
+      void
+      set_thickness_factor(const double f);
+
+      /** The factor of set_thickness_factor(). */
+      double
+      thickness_factor() const;
+
       /** The density (kg/m^3). */
       double
       density() const;
@@ -95,6 +106,8 @@ namespace masonry
       std::string thickness_expression;
       /** Density (kg/m^3). */
       double rho = 0;
+      /** Factor on the thickness. */
+      double factor = 1;
     };
   } // namespace geometry
 } // namespace masonry

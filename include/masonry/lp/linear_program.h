@@ -69,6 +69,10 @@ namespace masonry
                  const double       upper,
                  const std::string &name = "");
 
+      /** Change the objective coefficient of an existing column. */
+      void
+      set_cost(const unsigned int column, const double cost);
+
       /**
        * Add a constraint @p lower <= (A x)_row <= @p upper (either may be
        * infinite, both equal for an equality). Returns the index of the new

@@ -1,0 +1,149 @@
+/**
+ * @file
+ * The common part of the rigid-block analyses (`settlement`, `limit load`,
+ * `minimum thickness`): the block discretisation, supports, dead loads,
+ * the interface model, the LP solver and the results.
+ */
+#ifndef masonry_analysis_rigid_block_analysis_h
+#define masonry_analysis_rigid_block_analysis_h
+
+#include <masonry/analysis/interface.h>
+#include <masonry/lp/interface.h>
+#include <masonry/rigid_blocks/block_model.h>
+#include <masonry/rigid_blocks/output.h>
+
+#include <deal.II/base/function_parser.h>
+
+#include <memory>
+
+namespace masonry
+{
+  namespace geometry
+  {
+    class Interface;
+  }
+  namespace rigid_blocks
+  {
+    class InterfaceModel;
+    struct MechanismProblem;
+  } // namespace rigid_blocks
+
+  namespace analysis
+  {
+    /**
+     * Base class of analyses of a vault cut into rigid blocks. A derived
+     * class declares the shared entries with declare_block_parameters() in
+     * its own subsection, reads them with parse_block_parameters(), and in
+     * run() calls build_model() and then solve() on the LPs it assembles.
+     */
+    class RigidBlockAnalysis : public Interface
+    {
+    public:
+      /** Constructor (out of line: the members' types are incomplete). */
+      RigidBlockAnalysis();
+
+      /** Destructor. */
+      ~RigidBlockAnalysis() override;
+
+      /**
+       * Declare the entries shared by rigid-block analyses: blocks along u
+       * and v, stations per edge, quadrature points, supported edges,
+       * support contact, surface load and the output options.
+       */
+      static void
+      declare_block_parameters(dealii::ParameterHandler &prm);
+
+      /**
+       * Create the geometry model, the LP solver and the interface model,
+       * and build the blocks once (so that `--validate` finds bad labels
+       * and geometry).
+       */
+      void
+      setup(dealii::ParameterHandler &prm) override;
+
+    protected:
+      /** Read the shared entries; @p section names the subsection. */
+      void
+      parse_block_parameters(dealii::ParameterHandler &prm,
+                             const std::string        &section);
+
+      /**
+       * Build the blocks and interfaces from the geometry (with its current
+       * thickness factor) and the dead loads on every block: self weight and
+       * surface load.
+       */
+      void
+      build_model();
+
+      /** Total magnitude of the dead loads (N). */
+      double
+      dead_load_magnitude() const;
+
+      /**
+       * Solve @p lp, timing it into seconds_solve, and write it to
+       * @p mps_name in the output directory if `Export MPS file` is set.
+       */
+      lp::Solution
+      solve(const lp::LinearProgram &lp,
+            RunContext              &context,
+            const std::string       &mps_name = "lp.mps");
+
+      /**
+       * Largest violation of a row bound by the solution (in the LP's
+       * scaled units); a warning on screen above 1e-6.
+       */
+      double
+      check_solution(const lp::LinearProgram &lp,
+                     const lp::Solution      &solution,
+                     RunContext              &context) const;
+
+      /** Sizes and timings of the model and the LP into the summary. */
+      void
+      record(const lp::LinearProgram &lp,
+             const lp::Solution      &solution,
+             RunContext              &context) const;
+
+      /**
+       * Sum of the contact forces (N, global frame) on every support label
+       * from contact forces as returned by rigid_blocks::contact_forces():
+       * the reaction of the ground on the vault, as summary entries
+       * `support_reactions` {label: [Rx, Ry, Rz]}.
+       */
+      void
+      record_support_reactions(const std::vector<std::array<double, 3>> &forces,
+                               RunContext &context) const;
+
+      /** The subsection name (for error messages). */
+      std::string section;
+      /** The discretisation. */
+      rigid_blocks::Discretisation options;
+      /** Whether supports are bonded (rigid) rather than unilateral. */
+      bool bonded_supports = false;
+      /** Extra vertical dead load per unit area, Pa. */
+      dealii::FunctionParser<3> surface_load{1};
+      /** Output options. */
+      rigid_blocks::OutputOptions output_options;
+      /** The geometry. */
+      std::unique_ptr<geometry::Interface> geometry;
+      /** The LP solver. */
+      std::unique_ptr<lp::Interface> solver;
+      /** Its name. */
+      std::string solver_name;
+      /** The interface model. */
+      std::unique_ptr<rigid_blocks::InterfaceModel> joints;
+      /** Its name. */
+      std::string joints_name;
+      /** The blocks. */
+      std::unique_ptr<rigid_blocks::BlockModel> model;
+      /** Dead loads on every block: force (N) and moment about the
+       * centroid (N·m), self weight included. */
+      std::vector<dealii::Tensor<1, 3>> dead_force, dead_moment;
+      /** Seconds spent in build_model(), assembly and solve(). */
+      double seconds_geometry = 0, seconds_assembly = 0, seconds_solve = 0;
+      /** Number of LP solves and their iterations. */
+      unsigned int n_solves = 0, n_iterations = 0;
+    };
+  } // namespace analysis
+} // namespace masonry
+
+#endif

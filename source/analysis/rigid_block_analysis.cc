@@ -1,0 +1,262 @@
+#include <masonry/analysis/rigid_block_analysis.h>
+#include <masonry/core/json.h>
+#include <masonry/core/output_directory.h>
+#include <masonry/core/parameters.h>
+#include <masonry/geometry/interface.h>
+#include <masonry/rigid_blocks/interface_model.h>
+
+#include <deal.II/base/utilities.h>
+
+#include <chrono>
+#include <map>
+
+namespace masonry
+{
+  namespace analysis
+  {
+    namespace
+    {
+      std::set<std::string>
+      split_labels(const std::string &text)
+      {
+        std::set<std::string> labels;
+        for (const auto &l : dealii::Utilities::split_string_list(text, ','))
+          if (!l.empty())
+            labels.insert(l);
+        return labels;
+      }
+    } // namespace
+
+    RigidBlockAnalysis::RigidBlockAnalysis() = default;
+
+    RigidBlockAnalysis::~RigidBlockAnalysis() = default;
+
+    void
+    RigidBlockAnalysis::declare_block_parameters(dealii::ParameterHandler &prm)
+    {
+      prm.declare_entry("Blocks along u",
+                        "3",
+                        dealii::Patterns::Integer(1, 4096),
+                        "Number of blocks along the first parameter "
+                        "direction u of every NURBS patch (the geometry "
+                        "model's documentation says which way u runs).");
+      prm.declare_entry("Blocks along v",
+                        "4",
+                        dealii::Patterns::Integer(1, 4096),
+                        "Number of blocks along the second parameter "
+                        "direction v of every patch.");
+      prm.declare_entry("Stations per edge",
+                        "3",
+                        dealii::Patterns::Integer(2, 64),
+                        "Points along every interface edge (ends included) "
+                        "where contact conditions are written, each at the "
+                        "intrados and at the extrados; every point carries a "
+                        "tributary area (trapezoid rule).");
+      prm.declare_entry("Quadrature points",
+                        "6",
+                        dealii::Patterns::Integer(1, 32),
+                        "Gauss points per parameter direction for block "
+                        "volumes, centroids and loads (two Gauss points "
+                        "across the thickness integrate exactly).");
+      prm.declare_entry("Supported edges",
+                        "springing left, springing right",
+                        dealii::Patterns::Anything(),
+                        "Comma-separated labels of the patch edges that "
+                        "rest on supports (labels are listed in each "
+                        "geometry model's documentation). Other free edges "
+                        "are unsupported.");
+      prm.declare_entry("Support contact",
+                        "unilateral",
+                        dealii::Patterns::Selection("unilateral|bonded"),
+                        "`unilateral`: a support joint behaves like the "
+                        "joints between blocks (`Interface model`; with "
+                        "`no tension no sliding` a block may lift off its "
+                        "support but not penetrate or slide on it); "
+                        "`bonded`: the block follows the support motion "
+                        "exactly (seed eq. 8), a rigid clamp.");
+      prm.declare_entry("Surface load",
+                        "0",
+                        dealii::Patterns::Anything(),
+                        "Extra vertical dead load per unit area of the "
+                        "middle surface, Pa (N/m², positive downwards), as "
+                        "a function of x, y, z; e.g. a roof resting on the "
+                        "vault.");
+      prm.declare_entry("Displacement amplification",
+                        "0",
+                        dealii::Patterns::Double(0),
+                        "Factor on displacements in the deformed VTU and "
+                        "picture; 0 chooses one that makes the largest "
+                        "displacement 5 % of the vault's size.");
+      prm.declare_entry("Output subdivisions",
+                        "4",
+                        dealii::Patterns::Integer(1, 32),
+                        "Subdivisions per block and parameter direction in "
+                        "the VTU output (the blocks are curved).");
+      prm.declare_entry("Write picture",
+                        "true",
+                        dealii::Patterns::Bool(),
+                        "Render the deformed vault to vault.png with "
+                        "matplotlib (/usr/bin/python3).");
+    }
+
+    void
+    RigidBlockAnalysis::parse_block_parameters(dealii::ParameterHandler &prm,
+                                               const std::string        &name)
+    {
+      section                 = name;
+      options.n_u             = prm.get_integer("Blocks along u");
+      options.n_v             = prm.get_integer("Blocks along v");
+      options.n_stations      = prm.get_integer("Stations per edge");
+      options.n_quadrature    = prm.get_integer("Quadrature points");
+      options.supported_edges = split_labels(prm.get("Supported edges"));
+      bonded_supports         = prm.get("Support contact") == "bonded";
+      try
+        {
+          surface_load.initialize("x,y,z", prm.get("Surface load"), {});
+        }
+      catch (...)
+        {
+          AssertThrow(false,
+                      ExcParameter("Surface load",
+                                   "not a function of x, y, z: '" +
+                                     prm.get("Surface load") + "'"));
+        }
+      output_options.amplification =
+        prm.get_double("Displacement amplification");
+      output_options.subdivisions  = prm.get_integer("Output subdivisions");
+      output_options.write_picture = prm.get_bool("Write picture");
+    }
+
+    void
+    RigidBlockAnalysis::setup(dealii::ParameterHandler &prm)
+    {
+      geometry    = plugins::Registry<geometry::Interface>::create(prm);
+      solver      = plugins::Registry<lp::Interface>::create(prm);
+      solver_name = plugins::Registry<lp::Interface>::selected(prm);
+      joints = plugins::Registry<rigid_blocks::InterfaceModel>::create(prm);
+      joints_name =
+        plugins::Registry<rigid_blocks::InterfaceModel>::selected(prm);
+      plugins::ParsePathScope scope(section);
+      model = std::make_unique<rigid_blocks::BlockModel>(*geometry, options);
+    }
+
+    void
+    RigidBlockAnalysis::build_model()
+    {
+      const auto start = std::chrono::steady_clock::now();
+      model = std::make_unique<rigid_blocks::BlockModel>(*geometry, options);
+      const auto &blocks = model->blocks();
+      dead_force.assign(blocks.size(), dealii::Tensor<1, 3>());
+      dead_moment.assign(blocks.size(), dealii::Tensor<1, 3>());
+      rigid_blocks::integrate_surface_load(*model,
+                                           surface_load,
+                                           dead_force,
+                                           dead_moment);
+      for (unsigned int b = 0; b < blocks.size(); ++b)
+        dead_force[b][2] -= blocks[b].weight;
+      seconds_geometry +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+          .count();
+    }
+
+    double
+    RigidBlockAnalysis::dead_load_magnitude() const
+    {
+      double total = 0;
+      for (const auto &f : dead_force)
+        total += f.norm();
+      return total;
+    }
+
+    lp::Solution
+    RigidBlockAnalysis::solve(const lp::LinearProgram &lp,
+                              RunContext              &context,
+                              const std::string       &mps_name)
+    {
+      if (solver->export_mps() && dealii::Utilities::MPI::this_mpi_process(
+                                    context.mpi_communicator) == 0)
+        lp.write_mps(context.output.file(mps_name));
+      const auto         start    = std::chrono::steady_clock::now();
+      const lp::Solution solution = solver->solve(lp);
+      seconds_solve +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+          .count();
+      ++n_solves;
+      n_iterations += solution.iterations;
+      AssertThrow(solution.status != lp::Status::failed,
+                  dealii::ExcMessage("the LP solver (" + solver_name +
+                                     ") failed: " + solution.message));
+      return solution;
+    }
+
+    double
+    RigidBlockAnalysis::check_solution(const lp::LinearProgram &lp,
+                                       const lp::Solution      &solution,
+                                       RunContext              &context) const
+    {
+      const auto activity  = lp.row_activities(solution.x);
+      double     violation = 0;
+      for (unsigned int r = 0; r < activity.size(); ++r)
+        violation = std::max({violation,
+                              lp.row_lower()[r] - activity[r],
+                              activity[r] - lp.row_upper()[r]});
+      if (violation > 1e-6)
+        context.pcout << "Warning: the LP solution violates a constraint by "
+                      << violation << " (in the LP's scaled units)\n";
+      return violation;
+    }
+
+    void
+    RigidBlockAnalysis::record(const lp::LinearProgram &lp,
+                               const lp::Solution      &solution,
+                               RunContext              &context) const
+    {
+      Json &summary               = context.summary;
+      summary["n_blocks"]         = model->blocks().size();
+      summary["n_interfaces"]     = model->interfaces().size();
+      summary["n_contact_points"] = model->n_contact_points();
+      summary["interface_model"]  = joints_name;
+      summary["lp_rows"]          = lp.n_rows();
+      summary["lp_columns"]       = lp.n_columns();
+      summary["lp_nonzeros"]      = lp.n_nonzeros();
+      summary["lp_solver"]        = solver_name;
+      summary["lp_solves"]        = n_solves;
+      summary["lp_iterations"]    = n_iterations;
+      summary["seconds_geometry"] = seconds_geometry;
+      summary["seconds_assembly"] = seconds_assembly;
+      summary["seconds_solve"]    = seconds_solve;
+      if (solution.status == lp::Status::optimal)
+        summary["lp_max_violation"] = check_solution(lp, solution, context);
+    }
+
+    void
+    RigidBlockAnalysis::record_support_reactions(
+      const std::vector<std::array<double, 3>> &forces,
+      RunContext                               &context) const
+    {
+      std::map<std::string, dealii::Tensor<1, 3>> reactions;
+      unsigned int                                p = 0;
+      for (const auto &i : model->interfaces())
+        for (const auto &c : i.points)
+          {
+            if (i.second == rigid_blocks::Interface::support &&
+                p < forces.size())
+              // the force on block `first` is −(F_n n + F_a a + F_l l),
+              // n pointing from the block into the ground
+              reactions[i.support_label] -= forces[p][0] * c.normal +
+                                            forces[p][1] * c.across +
+                                            forces[p][2] * c.along;
+            ++p;
+          }
+      Json json = Json::object();
+      for (const auto &[label, r] : reactions)
+        {
+          Json v = Json::array();
+          for (unsigned int d = 0; d < 3; ++d)
+            v.push_back(r[d]);
+          json[label] = v;
+        }
+      context.summary["support_reactions"] = json;
+    }
+  } // namespace analysis
+} // namespace masonry
