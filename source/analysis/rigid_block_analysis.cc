@@ -8,6 +8,8 @@
 #include <deal.II/base/utilities.h>
 
 #include <chrono>
+#include <fstream>
+#include <iomanip>
 #include <map>
 
 namespace masonry
@@ -257,6 +259,88 @@ namespace masonry
           json[label] = v;
         }
       context.summary["support_reactions"] = json;
+    }
+
+    void
+    RigidBlockAnalysis::write_thrust_line(
+      const std::vector<std::array<double, 3>> &forces,
+      RunContext                               &context) const
+    {
+      if (dealii::Utilities::MPI::this_mpi_process(context.mpi_communicator) !=
+          0)
+        return;
+      std::ofstream csv(context.output.file("thrust_line.csv"));
+      csv << "# line of thrust: per interface the centre of pressure of the "
+             "normal contact forces (m), the resultant normal force N and "
+             "shear forces (N, from the LP dual), the eccentricity e (m) of "
+             "the centre of pressure across the thickness (towards the "
+             "extrados positive) and e/(t/2)\n";
+      csv << "interface,first_block,second_block,x,y,z,normal_force,"
+             "shear_across,shear_along,eccentricity,eccentricity_ratio\n";
+      csv << std::setprecision(10);
+      unsigned int p          = 0;
+      const auto  &interfaces = model->interfaces();
+      for (unsigned int k = 0; k < interfaces.size(); ++k)
+        {
+          const auto          &i = interfaces[k];
+          double               n = 0, sa = 0, sl = 0, half = 0;
+          dealii::Tensor<1, 3> moment;
+          for (const auto &c : i.points)
+            {
+              if (p < forces.size())
+                {
+                  n += forces[p][0];
+                  sa += forces[p][1];
+                  sl += forces[p][2];
+                  moment += forces[p][0] * (c.position - i.centre);
+                }
+              half =
+                std::max(half, std::abs((c.position - i.centre) * c.across));
+              ++p;
+            }
+          if (std::abs(n) < 1e-12 * (std::abs(sa) + std::abs(sl) + 1e-300))
+            continue;
+          const dealii::Point<3> x = i.centre + moment / n;
+          const double           e = (x - i.centre) * i.points.front().across;
+          csv << k << "," << i.first << ","
+              << (i.second == rigid_blocks::Interface::support ?
+                    std::string("support") :
+                    std::to_string(i.second))
+              << "," << x[0] << "," << x[1] << "," << x[2] << "," << n << ","
+              << sa << "," << sl << "," << e << ","
+              << (half > 0 ? e / half : 0.) << "\n";
+        }
+    }
+
+    unsigned int
+    RigidBlockAnalysis::locate_block(const unsigned int      patch,
+                                     const dealii::Point<2> &uv) const
+    {
+      const auto &blocks = model->blocks();
+      for (unsigned int b = 0; b < blocks.size(); ++b)
+        {
+          if (blocks[b].patch != patch)
+            continue;
+          // deal.II numbers the corners lexicographically: 0, 1, 3, 2 is
+          // counter-clockwise
+          const auto                       &c      = blocks[b].corners;
+          const std::array<unsigned int, 4> ccw    = {{0, 1, 3, 2}};
+          bool                              inside = true;
+          for (unsigned int k = 0; k < 4 && inside; ++k)
+            {
+              const dealii::Tensor<1, 2> e = c[ccw[(k + 1) % 4]] - c[ccw[k]];
+              const dealii::Tensor<1, 2> r = uv - c[ccw[k]];
+              inside = e[0] * r[1] - e[1] * r[0] >= -1e-12 * e.norm();
+            }
+          if (inside)
+            return b;
+        }
+      AssertThrow(false,
+                  dealii::ExcMessage(
+                    "no block of patch " + std::to_string(patch) +
+                    " contains the parameter point (" + std::to_string(uv[0]) +
+                    ", " + std::to_string(uv[1]) + ")"));
+      return 0;
     }
   } // namespace analysis
 } // namespace masonry

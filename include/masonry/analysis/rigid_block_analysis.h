@@ -113,6 +113,22 @@ namespace masonry
       record_support_reactions(const std::vector<std::array<double, 3>> &forces,
                                RunContext &context) const;
 
+      /**
+       * The line of thrust: for every interface the centre of pressure of
+       * its normal contact forces, the resultant normal and shear forces and
+       * the eccentricity across the thickness, into thrust_line.csv.
+       */
+      void
+      write_thrust_line(const std::vector<std::array<double, 3>> &forces,
+                        RunContext &context) const;
+
+      /**
+       * The block of patch @p patch whose cell contains the parameter point
+       * @p uv (the first one if @p uv is on a cell edge).
+       */
+      unsigned int
+      locate_block(const unsigned int patch, const dealii::Point<2> &uv) const;
+
       /** The subsection name (for error messages). */
       std::string section;
       /** The discretisation. */

@@ -1,0 +1,266 @@
+/**
+ * @file
+ * The limit-load analysis: the kinematic upper bound of the collapse load
+ * multiplier of a rigid-block vault as a linear program.
+ */
+#include <masonry/analysis/rigid_block_analysis.h>
+#include <masonry/core/json.h>
+#include <masonry/core/parameters.h>
+#include <masonry/geometry/interface.h>
+#include <masonry/rigid_blocks/interface_model.h>
+#include <masonry/rigid_blocks/mechanism.h>
+
+#include <deal.II/base/utilities.h>
+
+#include <chrono>
+#include <iomanip>
+
+namespace masonry
+{
+  namespace analysis
+  {
+    /**
+     * Collapse load multiplier: minimise λ = D(d) − q_D·d subject to the
+     * flow rule of the interface model and q_L·d = 1 (normalised live
+     * load), with fixed supports. The dual gives contact forces in
+     * equilibrium with q_D + λ q_L.
+     */
+    class LimitLoad : public RigidBlockAnalysis
+    {
+    public:
+      static void
+      declare_parameters(dealii::ParameterHandler &prm)
+      {
+        declare_block_parameters(prm);
+        prm.declare_entry(
+          "Live acceleration",
+          "1; 0; 0",
+          dealii::Patterns::List(dealii::Patterns::Double(), 3, 3, ";"),
+          "Acceleration of the live load per unit multiplier, in units of g "
+          "(dimensionless), as `ax; ay; az': the live load on a block of "
+          "weight W is λ W (ax, ay, az). `1; 0; 0' is the seismic case "
+          "(horizontal acceleration λ g along x); `0; 0; -1' a multiplier "
+          "on self weight; `0; 0; 0' for point loads only.");
+        prm.declare_entry(
+          "Point loads",
+          "",
+          dealii::Patterns::Anything(),
+          "Live point loads, `;'-separated, each `patch, u, v, Fx, Fy, Fz': "
+          "a force (Fx, Fy, Fz) in N per unit multiplier applied at the "
+          "point of the middle surface at parameters (u, v) ∈ [0, 1]² of "
+          "the patch with that index (0-based, in the geometry model's "
+          "order); e.g. `0, 1, 0.5, 0, 0, -1000'.");
+      }
+
+      void
+      parse_parameters(dealii::ParameterHandler &prm) override
+      {
+        parse_block_parameters(prm, "Limit load");
+        const auto a =
+          dealii::Utilities::split_string_list(prm.get("Live acceleration"),
+                                               ';');
+        for (unsigned int d = 0; d < 3; ++d)
+          acceleration[d] = dealii::Utilities::string_to_double(a[d]);
+        point_loads.clear();
+        for (const auto &load :
+             dealii::Utilities::split_string_list(prm.get("Point loads"), ';'))
+          {
+            if (load.empty())
+              continue;
+            const auto v = dealii::Utilities::split_string_list(load, ',');
+            AssertThrow(v.size() == 6,
+                        ExcParameter("Point loads",
+                                     "'" + load +
+                                       "' is not `patch, u, v, Fx, Fy, Fz'"));
+            PointLoad p;
+            try
+              {
+                p.patch = dealii::Utilities::string_to_int(v[0]);
+                p.uv =
+                  dealii::Point<2>(dealii::Utilities::string_to_double(v[1]),
+                                   dealii::Utilities::string_to_double(v[2]));
+                for (unsigned int d = 0; d < 3; ++d)
+                  p.force[d] = dealii::Utilities::string_to_double(v[3 + d]);
+              }
+            catch (...)
+              {
+                AssertThrow(false,
+                            ExcParameter("Point loads",
+                                         "'" + load + "' has a bad number"));
+              }
+            AssertThrow(
+              p.uv[0] >= 0 && p.uv[0] <= 1 && p.uv[1] >= 0 && p.uv[1] <= 1,
+              ExcParameter("Point loads",
+                           "'" + load + "': u and v must lie in [0, 1]"));
+            point_loads.push_back(p);
+          }
+      }
+
+      void
+      setup(dealii::ParameterHandler &prm) override
+      {
+        RigidBlockAnalysis::setup(prm);
+        plugins::ParsePathScope scope(section);
+        for (const auto &p : point_loads)
+          AssertThrow(
+            p.patch < geometry->patches().size(),
+            ExcParameter("Point loads",
+                         "patch " + std::to_string(p.patch) +
+                           " does not exist (the geometry has " +
+                           std::to_string(geometry->patches().size()) + ")"));
+        AssertThrow(acceleration.norm() > 0 || !point_loads.empty(),
+                    ExcParameter("Live acceleration",
+                                 "there is no live load: set a non-zero "
+                                 "acceleration or some Point loads"));
+      }
+
+      void
+      run(RunContext &context) override
+      {
+        auto &pcout = context.pcout;
+        build_model();
+        const auto &blocks = model->blocks();
+        pcout << "Blocks: " << blocks.size()
+              << ", interfaces: " << model->interfaces().size()
+              << ", contact points: " << model->n_contact_points() << "\n";
+
+        const auto start = std::chrono::steady_clock::now();
+        // live loads on the blocks
+        std::vector<dealii::Tensor<1, 3>> live_force(blocks.size()),
+          live_moment(blocks.size());
+        for (unsigned int b = 0; b < blocks.size(); ++b)
+          live_force[b] = blocks[b].weight * acceleration;
+        for (const auto &p : point_loads)
+          {
+            const unsigned int     b = locate_block(p.patch, p.uv);
+            const dealii::Point<3> x = geometry->patches()[p.patch].point(p.uv);
+            live_force[b] += p.force;
+            live_moment[b] +=
+              dealii::cross_product_3d(x - blocks[b].centroid, p.force);
+          }
+        double live_scale = 0;
+        for (const auto &f : live_force)
+          live_scale += f.norm();
+        AssertThrow(live_scale > 0,
+                    dealii::ExcMessage("the live load is zero"));
+
+        auto  problem   = rigid_blocks::build_mechanism_problem(*model,
+                                                             *joints,
+                                                             nullptr,
+                                                             bonded_supports);
+        auto &lp        = problem.lp;
+        lp.maximize     = false;
+        const auto dead = rigid_blocks::load_work(dead_force,
+                                                  dead_moment,
+                                                  problem.length,
+                                                  live_scale);
+        const auto live = rigid_blocks::load_work(live_force,
+                                                  live_moment,
+                                                  problem.length,
+                                                  live_scale);
+        for (unsigned int c = 0; c < dead.size(); ++c)
+          lp.set_cost(c, -dead[c]);
+        for (unsigned int c = problem.n_block_columns; c < lp.n_columns(); ++c)
+          lp.set_cost(c, problem.dissipation[c] / live_scale);
+        // normalisation, the last row: q_L·d = 1 (m)
+        const unsigned int row = lp.add_row(1, 1);
+        for (unsigned int c = 0; c < live.size(); ++c)
+          if (live[c] != 0)
+            lp.add_entry(row, c, live[c]);
+        seconds_assembly += std::chrono::duration<double>(
+                              std::chrono::steady_clock::now() - start)
+                              .count();
+        pcout << "Linear program: " << lp.n_rows() << " rows, "
+              << lp.n_columns() << " columns, " << lp.n_nonzeros()
+              << " non-zeros\n";
+
+        const lp::Solution solution = solve(lp, context);
+        record(lp, solution, context);
+        Json &summary                  = context.summary;
+        summary["live_load_magnitude"] = live_scale;
+        summary["dead_load_magnitude"] = dead_load_magnitude();
+        if (solution.status == lp::Status::unbounded)
+          {
+            summary["status"] = "mechanism";
+            summary["explanation"] =
+              "The linear program is unbounded: the dead loads alone do "
+              "positive work on a mechanism without dissipation, so the "
+              "vault cannot stand even without live load.";
+            pcout << "Result: mechanism — "
+                  << summary.at("explanation").as_string() << "\n";
+            return;
+          }
+        if (solution.status == lp::Status::infeasible)
+          {
+            summary["status"] = "no_collapse";
+            summary["explanation"] =
+              "The linear program is infeasible: no admissible mechanism "
+              "lets the live load do positive work, so no multiple of it "
+              "causes collapse (the load multiplier is infinite).";
+            pcout << "Result: no collapse — "
+                  << summary.at("explanation").as_string() << "\n";
+            return;
+          }
+
+        const double lambda        = solution.objective;
+        summary["status"]          = "optimal";
+        summary["load_multiplier"] = lambda;
+        pcout << "Result: load multiplier = " << std::setprecision(8) << lambda
+              << ", " << solution.iterations << " LP iterations\n";
+        if (lambda < 0)
+          pcout << "Warning: the load multiplier is negative: the dead loads "
+                   "alone need a reversed live load to stand.\n";
+
+        // the mechanism, scaled so that its largest centroid translation
+        // is 1 cm (its magnitude is arbitrary)
+        double largest = 0;
+        for (unsigned int b = 0; b < blocks.size(); ++b)
+          for (unsigned int d = 0; d < 3; ++d)
+            largest = std::max(largest, std::abs(solution.x[6 * b + d]));
+        const double scale         = largest > 0 ? 0.01 / largest : 1;
+        summary["mechanism_scale"] = scale;
+
+        const auto forces =
+          rigid_blocks::contact_forces(solution, live_scale, false);
+        record_support_reactions(forces, context);
+        write_thrust_line(forces, context);
+        rigid_blocks::write_results(
+          *model,
+          rigid_blocks::motion_from_solution(problem, solution.x, scale),
+          [](const dealii::Point<3> &, const std::string &) {
+            return dealii::Tensor<1, 3>();
+          },
+          forces,
+          output_options,
+          context);
+      }
+
+    private:
+      struct PointLoad
+      {
+        unsigned int         patch;
+        dealii::Point<2>     uv;
+        dealii::Tensor<1, 3> force;
+      };
+
+      dealii::Tensor<1, 3>   acceleration;
+      std::vector<PointLoad> point_loads;
+    };
+  } // namespace analysis
+} // namespace masonry
+
+MASONRY_REGISTER_ANALYSIS(
+  masonry::analysis::LimitLoad,
+  "limit load",
+  "Collapse load multiplier of a rigid-block vault (kinematic upper bound "
+  "as a linear program): dead loads (self weight, `Surface load') and live "
+  "loads (an acceleration λ g in a given direction, the seismic case, and "
+  "point loads); minimises λ = D − q_D·d subject to the flow rule of the "
+  "`Interface model' with the live-load work normalised to 1. Supports are "
+  "fixed. Writes load_multiplier, the hinges (crack list) and the support "
+  "reactions to summary.json, the contact forces of the dual (static) "
+  "problem to interface_forces.csv, the line of thrust (centre of "
+  "pressure of every joint) to thrust_line.csv, and the mechanism as in "
+  "`settlement'. Status `optimal', `mechanism' (the dead loads alone "
+  "cause collapse) or `no_collapse' (no multiple of the live load causes "
+  "collapse).")
