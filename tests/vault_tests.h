@@ -9,6 +9,7 @@
 #include <masonry/core/application.h>
 #include <masonry/core/json.h>
 
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <iostream>
@@ -91,6 +92,68 @@ namespace vault_tests
       << "subsection LP solver\n  set Solver = " << solver << "\nend\n";
     return s.str();
   }
+
+  /**
+   * The five-hinge mechanism of a semicircular arch (R = 1; hinges at the
+   * crown extrados, the haunch intrados at β from the crown and the
+   * springing extrados): moment equilibrium of the segment [0, β] about the
+   * haunch hinge and of the half arch about the springing hinge.
+   */
+  namespace arch_theory
+  {
+    /**
+     * t/R and H/(γRt) of the five-hinge mechanism with the haunch hinge at
+     * β (rad), R = 1; @p true_centroid: weight of annular sectors at their
+     * true centroids, else on the centreline.
+     */
+    std::pair<double, double>
+    five_hinge(const double beta, const bool true_centroid)
+    {
+      auto residual = [&](const double t) {
+        const double re = 1 + t / 2, ri = 1 - t / 2;
+        auto         xbar = [&](const double phi) {
+          return true_centroid ? (re * re * re - ri * ri * ri) / 3 *
+                                   (1 - std::cos(phi)) / (t * phi) :
+                                         (1 - std::cos(phi)) / phi;
+        };
+        const double W1 = t * beta, W = t * M_PI / 2;
+        const double H1 =
+          W1 * (ri * std::sin(beta) - xbar(beta)) / (re - ri * std::cos(beta));
+        const double H2 = W * (re - xbar(M_PI / 2)) / re;
+        return std::make_pair(H1 - H2, H2);
+      };
+      double lo = 0.01, hi = 0.3;
+      for (unsigned int i = 0; i < 200; ++i)
+        {
+          const double mid = 0.5 * (lo + hi);
+          if (residual(lo).first * residual(mid).first <= 0)
+            hi = mid;
+          else
+            lo = mid;
+        }
+      return {lo, residual(lo).second / lo};
+    }
+
+    /** Maximise t(β) by golden-section search: (t/R, β in degrees, h). */
+    std::array<double, 3>
+    milankovitch(const bool true_centroid)
+    {
+      double       a = 0.5, b = 1.3;
+      const double g = (std::sqrt(5.) - 1) / 2;
+      for (unsigned int i = 0; i < 200; ++i)
+        {
+          const double c = b - g * (b - a), d = a + g * (b - a);
+          if (five_hinge(c, true_centroid).first >
+              five_hinge(d, true_centroid).first)
+            b = d;
+          else
+            a = c;
+        }
+      const double beta = 0.5 * (a + b);
+      const auto   th   = five_hinge(beta, true_centroid);
+      return {{th.first, beta * 180 / M_PI, th.second}};
+    }
+  } // namespace arch_theory
 } // namespace vault_tests
 
 #endif

@@ -14,6 +14,7 @@
 
 #include <chrono>
 #include <iomanip>
+#include <limits>
 
 namespace masonry
 {
@@ -114,8 +115,25 @@ namespace masonry
                                  "acceleration or some Point loads"));
       }
 
+      std::string
+      fitness_name() const override
+      {
+        return "minus the load multiplier";
+      }
+
+      double
+      evaluate(RunContext &context) override
+      {
+        build_model();
+        const auto         problem  = assemble();
+        const lp::Solution solution = solve(problem.lp, context);
+        if (solution.status != lp::Status::optimal)
+          return -std::numeric_limits<double>::infinity();
+        return -solution.objective;
+      }
+
       void
-      run(RunContext &context) override
+      analyse(RunContext &context) override
       {
         auto &pcout = context.pcout;
         build_model();
@@ -123,53 +141,8 @@ namespace masonry
         pcout << "Blocks: " << blocks.size()
               << ", interfaces: " << model->interfaces().size()
               << ", contact points: " << model->n_contact_points() << "\n";
-
-        const auto start = std::chrono::steady_clock::now();
-        // live loads on the blocks
-        std::vector<dealii::Tensor<1, 3>> live_force(blocks.size()),
-          live_moment(blocks.size());
-        for (unsigned int b = 0; b < blocks.size(); ++b)
-          live_force[b] = blocks[b].weight * acceleration;
-        for (const auto &p : point_loads)
-          {
-            const unsigned int     b = locate_block(p.patch, p.uv);
-            const dealii::Point<3> x = geometry->patches()[p.patch].point(p.uv);
-            live_force[b] += p.force;
-            live_moment[b] +=
-              dealii::cross_product_3d(x - blocks[b].centroid, p.force);
-          }
-        double live_scale = 0;
-        for (const auto &f : live_force)
-          live_scale += f.norm();
-        AssertThrow(live_scale > 0,
-                    dealii::ExcMessage("the live load is zero"));
-
-        auto  problem   = rigid_blocks::build_mechanism_problem(*model,
-                                                             *joints,
-                                                             nullptr,
-                                                             bonded_supports);
-        auto &lp        = problem.lp;
-        lp.maximize     = false;
-        const auto dead = rigid_blocks::load_work(dead_force,
-                                                  dead_moment,
-                                                  problem.length,
-                                                  live_scale);
-        const auto live = rigid_blocks::load_work(live_force,
-                                                  live_moment,
-                                                  problem.length,
-                                                  live_scale);
-        for (unsigned int c = 0; c < dead.size(); ++c)
-          lp.set_cost(c, -dead[c]);
-        for (unsigned int c = problem.n_block_columns; c < lp.n_columns(); ++c)
-          lp.set_cost(c, problem.dissipation[c] / live_scale);
-        // normalisation, the last row: q_L·d = 1 (m)
-        const unsigned int row = lp.add_row(1, 1);
-        for (unsigned int c = 0; c < live.size(); ++c)
-          if (live[c] != 0)
-            lp.add_entry(row, c, live[c]);
-        seconds_assembly += std::chrono::duration<double>(
-                              std::chrono::steady_clock::now() - start)
-                              .count();
+        const auto  problem = assemble();
+        const auto &lp      = problem.lp;
         pcout << "Linear program: " << lp.n_rows() << " rows, "
               << lp.n_columns() << " columns, " << lp.n_nonzeros()
               << " non-zeros\n";
@@ -236,6 +209,62 @@ namespace masonry
       }
 
     private:
+      /** The LP of the current model (sets live_scale). */
+      rigid_blocks::MechanismProblem
+      assemble()
+      {
+        const auto  start  = std::chrono::steady_clock::now();
+        const auto &blocks = model->blocks();
+        // live loads on the blocks
+        std::vector<dealii::Tensor<1, 3>> live_force(blocks.size()),
+          live_moment(blocks.size());
+        for (unsigned int b = 0; b < blocks.size(); ++b)
+          live_force[b] = blocks[b].weight * acceleration;
+        for (const auto &p : point_loads)
+          {
+            const unsigned int     b = locate_block(p.patch, p.uv);
+            const dealii::Point<3> x = geometry->patches()[p.patch].point(p.uv);
+            live_force[b] += p.force;
+            live_moment[b] +=
+              dealii::cross_product_3d(x - blocks[b].centroid, p.force);
+          }
+        live_scale = 0;
+        for (const auto &f : live_force)
+          live_scale += f.norm();
+        AssertThrow(live_scale > 0,
+                    dealii::ExcMessage("the live load is zero"));
+
+        auto  problem   = rigid_blocks::build_mechanism_problem(*model,
+                                                             *joints,
+                                                             nullptr,
+                                                             bonded_supports);
+        auto &lp        = problem.lp;
+        lp.maximize     = false;
+        const auto dead = rigid_blocks::load_work(dead_force,
+                                                  dead_moment,
+                                                  problem.length,
+                                                  live_scale);
+        const auto live = rigid_blocks::load_work(live_force,
+                                                  live_moment,
+                                                  problem.length,
+                                                  live_scale);
+        for (unsigned int c = 0; c < dead.size(); ++c)
+          lp.set_cost(c, -dead[c]);
+        for (unsigned int c = problem.n_block_columns; c < lp.n_columns(); ++c)
+          lp.set_cost(c, problem.dissipation[c] / live_scale);
+        // normalisation, the last row: q_L·d = 1 (m)
+        const unsigned int row = lp.add_row(1, 1);
+        for (unsigned int c = 0; c < live.size(); ++c)
+          if (live[c] != 0)
+            lp.add_entry(row, c, live[c]);
+        seconds_assembly += std::chrono::duration<double>(
+                              std::chrono::steady_clock::now() - start)
+                              .count();
+        return problem;
+      }
+
+      double live_scale = 1;
+
       struct PointLoad
       {
         unsigned int         patch;

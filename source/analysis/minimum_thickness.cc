@@ -12,6 +12,7 @@
 
 #include <chrono>
 #include <iomanip>
+#include <limits>
 
 namespace masonry
 {
@@ -66,70 +67,55 @@ namespace masonry
         smallest_factor = prm.get_double("Smallest factor");
       }
 
+      std::string
+      fitness_name() const override
+      {
+        return "minimum thickness factor";
+      }
+
+      double
+      evaluate(RunContext &context) override
+      {
+        double       lo = 0, hi = 0;
+        unsigned int steps = 0;
+        if (bisect(context, lo, hi, steps) != "optimal")
+          return -std::numeric_limits<double>::infinity();
+        return hi;
+      }
+
       void
-      run(RunContext &context) override
+      analyse(RunContext &context) override
       {
         auto &pcout          = context.pcout;
         Json &summary        = context.summary;
         summary["tolerance"] = tolerance;
 
-        double       lo = 0, hi = 0; // collapses at lo, stands at hi
-        unsigned int steps = 0;
-        auto         check = [&](const double s) {
-          ++steps;
-          const bool ok = stands(s, context);
-          pcout << "  thickness factor " << std::setprecision(8) << s << ": "
-                << (ok ? "stands" : "collapses") << "\n";
-          return ok;
-        };
-        if (check(1.))
+        double            lo = 0, hi = 0; // collapses at lo, stands at hi
+        unsigned int      steps  = 0;
+        const std::string status = bisect(context, lo, hi, steps);
+        if (status == "stands_at_smallest_factor")
           {
-            hi = 1;
-            lo = 0.5;
-            while (check(lo))
-              {
-                hi = lo;
-                lo /= 2;
-                if (lo < smallest_factor)
-                  {
-                    summary["status"] = "stands_at_smallest_factor";
-                    summary["explanation"] =
-                      "The vault stands at the smallest thickness factor "
-                      "tried (`Smallest factor'): its strength does not "
-                      "depend on thickness in this range (e.g. bonded "
-                      "supports or cohesive joints).";
-                    summary["minimum_thickness_factor"] = hi;
-                    pcout << "Result: " << summary.at("explanation").as_string()
-                          << "\n";
-                    return;
-                  }
-              }
+            summary["status"] = status;
+            summary["explanation"] =
+              "The vault stands at the smallest thickness factor tried "
+              "(`Smallest factor'): its strength does not depend on "
+              "thickness in this range (e.g. bonded supports or cohesive "
+              "joints).";
+            summary["minimum_thickness_factor"] = hi;
+            pcout << "Result: " << summary.at("explanation").as_string()
+                  << "\n";
+            return;
           }
-        else
+        if (status == "mechanism")
           {
-            lo = 1;
-            hi = 2;
-            while (!check(hi))
-              {
-                lo = hi;
-                hi *= 2;
-                if (hi > largest_factor)
-                  {
-                    summary["status"] = "mechanism";
-                    summary["explanation"] =
-                      "The vault collapses at every thickness factor up to "
-                      "`Largest factor': it cannot stand on these supports "
-                      "(e.g. a support is missing).";
-                    pcout << "Result: mechanism — "
-                          << summary.at("explanation").as_string() << "\n";
-                    return;
-                  }
-              }
-          }
-        while (hi - lo > tolerance * hi)
-          {
-            const double mid       = 0.5 * (lo + hi);
-            (check(mid) ? hi : lo) = mid;
+            summary["status"] = status;
+            summary["explanation"] =
+              "The vault collapses at every thickness factor up to "
+              "`Largest factor': it cannot stand on these supports (e.g. a "
+              "support is missing).";
+            pcout << "Result: mechanism — "
+                  << summary.at("explanation").as_string() << "\n";
+            return;
           }
 
         // the collapse mechanism just below the minimum: minimise the
@@ -169,6 +155,54 @@ namespace masonry
       }
 
     private:
+      /**
+       * Bracket and bisect the thickness factor: on return the vault
+       * collapses at @p lo and stands at @p hi. Returns "optimal",
+       * "stands_at_smallest_factor" or "mechanism".
+       */
+      std::string
+      bisect(RunContext &context, double &lo, double &hi, unsigned int &steps)
+      {
+        auto check = [&](const double s) {
+          ++steps;
+          const bool ok = stands(s, context);
+          if (!quiet)
+            context.pcout << "  thickness factor " << std::setprecision(8) << s
+                          << ": " << (ok ? "stands" : "collapses") << "\n";
+          return ok;
+        };
+        if (check(1.))
+          {
+            hi = 1;
+            lo = 0.5;
+            while (check(lo))
+              {
+                hi = lo;
+                lo /= 2;
+                if (lo < smallest_factor)
+                  return "stands_at_smallest_factor";
+              }
+          }
+        else
+          {
+            lo = 1;
+            hi = 2;
+            while (!check(hi))
+              {
+                lo = hi;
+                hi *= 2;
+                if (hi > largest_factor)
+                  return "mechanism";
+              }
+          }
+        while (hi - lo > tolerance * hi)
+          {
+            const double mid       = 0.5 * (lo + hi);
+            (check(mid) ? hi : lo) = mid;
+          }
+        return "optimal";
+      }
+
       /**
        * Build the model with thickness factor @p s and the LP "maximise
        * (q·d − D)/|q|" with fixed supports; keep it in last_problem.

@@ -1,4 +1,6 @@
+#include <masonry/adaptation/optimiser.h>
 #include <masonry/analysis/rigid_block_analysis.h>
+#include <masonry/config.h>
 #include <masonry/core/json.h>
 #include <masonry/core/output_directory.h>
 #include <masonry/core/parameters.h>
@@ -7,9 +9,12 @@
 
 #include <deal.II/base/utilities.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <fstream>
 #include <iomanip>
+#include <limits>
 #include <map>
 
 namespace masonry
@@ -138,15 +143,189 @@ namespace masonry
       joints = plugins::Registry<rigid_blocks::InterfaceModel>::create(prm);
       joints_name =
         plugins::Registry<rigid_blocks::InterfaceModel>::selected(prm);
+      optimiser      = plugins::Registry<adaptation::Optimiser>::create(prm);
+      optimiser_name = plugins::Registry<adaptation::Optimiser>::selected(prm);
+      if (optimiser->active())
+        {
+          plugins::ParsePathScope scope(
+            adaptation::Optimiser::registry_section);
+          const double h = optimiser->minimum_block_size;
+          AssertThrow(h * std::max(options.n_u, options.n_v) < 1,
+                      ExcParameter("Minimum block size",
+                                   "must be below 1/n for n blocks along a "
+                                   "direction (here " +
+                                     std::to_string(
+                                       std::max(options.n_u, options.n_v)) +
+                                     ")"));
+          AssertThrow(options.n_u > 1 || options.n_v > 1,
+                      ExcParameter("Optimiser",
+                                   "one block per patch has no interior "
+                                   "line to move"));
+        }
       plugins::ParsePathScope scope(section);
       model = std::make_unique<rigid_blocks::BlockModel>(*geometry, options);
     }
 
     void
+    RigidBlockAnalysis::run(RunContext &context)
+    {
+      if (optimiser && optimiser->active())
+        adapt(context);
+      analyse(context);
+    }
+
+    std::vector<double>
+    RigidBlockAnalysis::uniform_genes() const
+    {
+      std::vector<double> genes;
+      for (unsigned int p = 0; p < geometry->patches().size(); ++p)
+        for (unsigned int k = 1; k < options.n_u; ++k)
+          genes.push_back(double(k) / options.n_u);
+      for (unsigned int k = 1; k < options.n_v; ++k)
+        genes.push_back(double(k) / options.n_v);
+      return genes;
+    }
+
+    std::vector<std::vector<dealii::Point<2>>>
+    RigidBlockAnalysis::vertices_from_genes(
+      const std::vector<double> &genes) const
+    {
+      const unsigned int n_patches = geometry->patches().size();
+      const unsigned int nu = options.n_u, nv = options.n_v;
+      const double       h = optimiser->minimum_block_size;
+      AssertThrow(genes.size() == n_patches * (nu - 1) + (nv - 1),
+                  dealii::ExcMessage("wrong number of mesh genes"));
+      auto positions = [&](const unsigned int first, const unsigned int n) {
+        std::vector<double> q(genes.begin() + first,
+                              genes.begin() + first + (n - 1));
+        std::sort(q.begin(), q.end());
+        std::vector<double> p(n + 1, 0.);
+        p[n] = 1;
+        for (unsigned int k = 1; k < n; ++k)
+          p[k] = k * h + std::clamp(q[k - 1], 0., 1.) * (1 - n * h);
+        return p;
+      };
+      const std::vector<double> v = positions(n_patches * (nu - 1), nv);
+      std::vector<std::vector<dealii::Point<2>>> vertices(n_patches);
+      for (unsigned int p = 0; p < n_patches; ++p)
+        {
+          const std::vector<double> u = positions(p * (nu - 1), nu);
+          for (unsigned int j = 0; j <= nv; ++j)
+            for (unsigned int i = 0; i <= nu; ++i)
+              vertices[p].emplace_back(u[i], v[j]);
+        }
+      return vertices;
+    }
+
+    void
+    RigidBlockAnalysis::adapt(RunContext &context)
+    {
+      auto              &pcout                = context.pcout;
+      const auto         x0                   = uniform_genes();
+      const unsigned int n_interfaces_uniform = model->interfaces().size();
+      pcout << "Adaptation: " << optimiser_name << ", " << x0.size()
+            << " genes, population " << optimiser->population_size
+            << ", at most " << optimiser->generations << " generations; "
+            << "maximising " << fitness_name() << "\n";
+      quiet                  = true;
+      unsigned long n_failed = 0;
+      const auto    start    = std::chrono::steady_clock::now();
+      auto          fitness  = [&](const std::vector<double> &genes) {
+        try
+          {
+            mesh_vertices  = vertices_from_genes(genes);
+            const double f = evaluate(context);
+            // patches glued along moved lines must stay glued
+            if (model->interfaces().size() != n_interfaces_uniform)
+              {
+                ++n_failed;
+                return -std::numeric_limits<double>::infinity();
+              }
+            return f;
+          }
+        catch (const std::exception &)
+          {
+            ++n_failed;
+            return -std::numeric_limits<double>::infinity();
+          }
+      };
+      const double uniform = fitness(x0);
+      const auto   result =
+        optimiser->optimise(fitness, x0, [&](const adaptation::Generation &g) {
+          pcout << "  generation " << g.generation << ": best "
+                << std::setprecision(8) << g.best << ", mean " << g.mean << ", "
+                << g.evaluations << " evaluations, " << std::setprecision(3)
+                << g.seconds << " s\n";
+        });
+      const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+          .count();
+      quiet            = false;
+      mesh_vertices    = vertices_from_genes(result.best_genes);
+      seconds_geometry = seconds_assembly = seconds_solve = 0;
+      n_solves = n_iterations = 0;
+
+      Json a               = Json::object();
+      a["optimiser"]       = optimiser_name;
+      a["fitness"]         = fitness_name();
+      a["genes"]           = x0.size();
+      a["population_size"] = optimiser->population_size;
+      a["generations"] =
+        result.history.empty() ? 0 : result.history.back().generation;
+      a["evaluations"]            = result.evaluations + 1;
+      a["failed_evaluations"]     = n_failed;
+      a["seconds"]                = seconds;
+      a["evaluations_per_second"] = (result.evaluations + 1) / seconds;
+      a["uniform_fitness"]        = uniform;
+      a["best_fitness"]           = std::max(result.best_fitness, uniform);
+      Json genes                  = Json::array();
+      for (const double g : result.best_genes)
+        genes.push_back(g);
+      a["best_genes"]               = genes;
+      context.summary["adaptation"] = a;
+      pcout << "Adaptation: best " << fitness_name() << " "
+            << std::setprecision(8) << result.best_fitness << " (uniform mesh "
+            << uniform << "), " << result.evaluations + 1 << " evaluations in "
+            << std::setprecision(3) << seconds << " s\n";
+
+      if (dealii::Utilities::MPI::this_mpi_process(context.mpi_communicator) !=
+          0)
+        return;
+      {
+        std::ofstream csv(context.output.file("adaptation.csv"));
+        csv << "# convergence of the mesh adaptation: best and mean "
+            << fitness_name() << " per generation\n"
+            << "generation,evaluations,best,mean,seconds\n"
+            << std::setprecision(12);
+        for (const auto &g : result.history)
+          csv << g.generation << "," << g.evaluations << "," << g.best << ","
+              << g.mean << "," << g.seconds << "\n";
+      }
+      if (output_options.write_picture)
+        {
+          const std::string script = std::string(MASONRY_SOURCE_DIR) +
+                                     "/contrib/plot/adaptation_plot.py";
+          const std::string dir     = context.output.path();
+          const std::string command = "/usr/bin/python3 '" + script + "' '" +
+                                      dir + "adaptation.csv' '" + dir +
+                                      "adaptation.png' >/dev/null 2>&1";
+          if (std::system(command.c_str()) == 0)
+            context.output.file("adaptation.png");
+          else
+            pcout << "Note: adaptation.png not written (" << script
+                  << " with /usr/bin/python3 and matplotlib)\n";
+        }
+    }
+
+    void
     RigidBlockAnalysis::build_model()
     {
-      const auto start = std::chrono::steady_clock::now();
-      model = std::make_unique<rigid_blocks::BlockModel>(*geometry, options);
+      const auto start   = std::chrono::steady_clock::now();
+      model              = mesh_vertices.empty() ?
+                             std::make_unique<rigid_blocks::BlockModel>(*geometry, options) :
+                             std::make_unique<rigid_blocks::BlockModel>(*geometry,
+                                                           options,
+                                                           mesh_vertices);
       const auto &blocks = model->blocks();
       dead_force.assign(blocks.size(), dealii::Tensor<1, 3>());
       dead_moment.assign(blocks.size(), dealii::Tensor<1, 3>());
@@ -175,8 +354,9 @@ namespace masonry
                               RunContext              &context,
                               const std::string       &mps_name)
     {
-      if (solver->export_mps() && dealii::Utilities::MPI::this_mpi_process(
-                                    context.mpi_communicator) == 0)
+      if (!quiet && solver->export_mps() &&
+          dealii::Utilities::MPI::this_mpi_process(context.mpi_communicator) ==
+            0)
         lp.write_mps(context.output.file(mps_name));
       const auto         start    = std::chrono::steady_clock::now();
       const lp::Solution solution = solver->solve(lp);

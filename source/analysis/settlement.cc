@@ -16,6 +16,7 @@
 #include <cmath>
 #include <fstream>
 #include <iomanip>
+#include <limits>
 
 namespace masonry
 {
@@ -101,8 +102,25 @@ namespace masonry
           }
       }
 
+      std::string
+      fitness_name() const override
+      {
+        return "work of the loads minus dissipation (J)";
+      }
+
+      double
+      evaluate(RunContext &context) override
+      {
+        build_model();
+        const auto         problem  = assemble();
+        const lp::Solution solution = solve(problem.lp, context);
+        if (solution.status != lp::Status::optimal)
+          return -std::numeric_limits<double>::infinity();
+        return solution.objective * force_scale * settlement_scale;
+      }
+
       void
-      run(RunContext &context) override
+      analyse(RunContext &context) override
       {
         auto &pcout = context.pcout;
         build_model();
@@ -111,40 +129,9 @@ namespace masonry
         pcout << "Blocks: " << blocks.size()
               << ", interfaces: " << interfaces.size()
               << ", contact points: " << model->n_contact_points() << "\n";
-
-        auto start = Clock::now();
-        // unit settlement: the largest ground motion at a support point
-        const auto u0    = settlement_function();
-        settlement_scale = 0;
-        for (const auto &i : interfaces)
-          if (i.second == rigid_blocks::Interface::support)
-            for (const auto &c : i.points)
-              settlement_scale =
-                std::max(settlement_scale,
-                         u0(c.position, i.support_label).norm());
-        if (settlement_scale == 0)
-          settlement_scale = 1;
-        const double force_scale = dead_load_magnitude();
-        auto         problem     = rigid_blocks::build_mechanism_problem(
-          *model,
-          *joints,
-          [&](const dealii::Point<3> &x, const std::string &label) {
-            return u0(x, label) / settlement_scale;
-          },
-          bonded_supports);
-        const auto work = rigid_blocks::load_work(dead_force,
-                                                  dead_moment,
-                                                  problem.length,
-                                                  force_scale);
-        for (unsigned int c = 0; c < work.size(); ++c)
-          problem.lp.set_cost(c, work[c]);
-        for (unsigned int c = problem.n_block_columns;
-             c < problem.lp.n_columns();
-             ++c)
-          problem.lp.set_cost(c, -problem.dissipation[c] / force_scale);
-        problem.lp.maximize = true;
-        seconds_assembly += seconds_since(start);
-        const auto &lp = problem.lp;
+        const auto  u0      = settlement_function();
+        const auto  problem = assemble();
+        const auto &lp      = problem.lp;
         pcout << "Linear program: " << lp.n_rows() << " rows, "
               << lp.n_columns() << " columns, " << lp.n_nonzeros()
               << " non-zeros\n";
@@ -205,6 +192,48 @@ namespace masonry
       }
 
     private:
+      /**
+       * The scaled LP of the current model (sets settlement_scale and
+       * force_scale).
+       */
+      rigid_blocks::MechanismProblem
+      assemble()
+      {
+        const auto start = Clock::now();
+        const auto u0    = settlement_function();
+        // unit settlement: the largest ground motion at a support point
+        settlement_scale = 0;
+        for (const auto &i : model->interfaces())
+          if (i.second == rigid_blocks::Interface::support)
+            for (const auto &c : i.points)
+              settlement_scale =
+                std::max(settlement_scale,
+                         u0(c.position, i.support_label).norm());
+        if (settlement_scale == 0)
+          settlement_scale = 1;
+        force_scale  = dead_load_magnitude();
+        auto problem = rigid_blocks::build_mechanism_problem(
+          *model,
+          *joints,
+          [&](const dealii::Point<3> &x, const std::string &label) {
+            return u0(x, label) / settlement_scale;
+          },
+          bonded_supports);
+        const auto work = rigid_blocks::load_work(dead_force,
+                                                  dead_moment,
+                                                  problem.length,
+                                                  force_scale);
+        for (unsigned int c = 0; c < work.size(); ++c)
+          problem.lp.set_cost(c, work[c]);
+        for (unsigned int c = problem.n_block_columns;
+             c < problem.lp.n_columns();
+             ++c)
+          problem.lp.set_cost(c, -problem.dissipation[c] / force_scale);
+        problem.lp.maximize = true;
+        seconds_assembly += seconds_since(start);
+        return problem;
+      }
+
       /** Settlement at a support point, m (zero on fixed supports). */
       rigid_blocks::SupportMotion
       settlement_function() const
@@ -221,6 +250,7 @@ namespace masonry
       std::set<std::string>     settling_edges;
       dealii::FunctionParser<3> settlement{3};
       double                    settlement_scale = 1;
+      double                    force_scale      = 1;
     };
   } // namespace analysis
 } // namespace masonry

@@ -27,6 +27,10 @@ namespace masonry
     class InterfaceModel;
     struct MechanismProblem;
   } // namespace rigid_blocks
+  namespace adaptation
+  {
+    class Optimiser;
+  }
 
   namespace analysis
   {
@@ -61,7 +65,43 @@ namespace masonry
       void
       setup(dealii::ParameterHandler &prm) override;
 
+      /**
+       * Adapt the mesh if an optimiser is selected (`subsection
+       * Adaptation`), then analyse() the (best) mesh.
+       */
+      void
+      run(RunContext &context) final;
+
     protected:
+      /** The analysis of the current mesh, with all its output. */
+      virtual void
+      analyse(RunContext &context) = 0;
+
+      /**
+       * The quantity the adaptation maximises for the current mesh
+       * (`mesh_vertices`), without output: −∞ if the mesh has no optimal
+       * answer.
+       */
+      virtual double
+      evaluate(RunContext &context) = 0;
+
+      /** Name and unit of the quantity evaluate() returns. */
+      virtual std::string
+      fitness_name() const = 0;
+
+      /**
+       * The parameter meshes of the `lines' genes: per patch n_u − 1 genes
+       * for the lines u = const, then n_v − 1 genes shared by all patches
+       * for the lines v = const; each group is sorted and mapped to
+       * positions k h + q_k (1 − n h) with h the minimum block size.
+       */
+      std::vector<std::vector<dealii::Point<2>>>
+      vertices_from_genes(const std::vector<double> &genes) const;
+
+      /** The genes of the uniform mesh. */
+      std::vector<double>
+      uniform_genes() const;
+
       /** Read the shared entries; @p section names the subsection. */
       void
       parse_block_parameters(dealii::ParameterHandler &prm,
@@ -128,6 +168,22 @@ namespace masonry
        */
       unsigned int
       locate_block(const unsigned int patch, const dealii::Point<2> &uv) const;
+
+      /** Run the optimiser and set mesh_vertices to the best mesh. */
+      void
+      adapt(RunContext &context);
+
+      /**
+       * Parameter-space vertices of every patch (empty: uniform), used by
+       * build_model().
+       */
+      std::vector<std::vector<dealii::Point<2>>> mesh_vertices;
+      /** The optimiser (`none` by default). */
+      std::unique_ptr<adaptation::Optimiser> optimiser;
+      /** Its name. */
+      std::string optimiser_name;
+      /** True while the adaptation evaluates meshes: no screen output. */
+      bool quiet = false;
 
       /** The subsection name (for error messages). */
       std::string section;

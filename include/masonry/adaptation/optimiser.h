@@ -1,0 +1,95 @@
+/**
+ * @file
+ * Optimisers that move the block boundaries of a rigid-block model in NURBS
+ * parameter space (`subsection Adaptation`, `set Optimiser = ...`): the
+ * seed paper's genetic algorithm and other population-based methods of
+ * pagmo2.
+ */
+#ifndef masonry_adaptation_optimiser_h
+#define masonry_adaptation_optimiser_h
+
+#include <masonry/adaptation/pagmo_runner.h>
+#include <masonry/core/plugins.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace masonry
+{
+  /** Adaptation of block meshes. */
+  namespace adaptation
+  {
+    /**
+     * Base class of optimisers. The problem: maximise a fitness over genes
+     * in [0, 1]^n; the initial population contains a given point (the
+     * uniform mesh), so the result is never worse than it.
+     */
+    class Optimiser
+    {
+    public:
+      /** Parameters live in `subsection Adaptation`. */
+      static constexpr const char *registry_section = "Adaptation";
+      /** The selection entry: `set Optimiser = ...`. */
+      static constexpr const char *registry_entry = "Optimiser";
+      /** Default selection: "none". */
+      static const char *
+      default_plugin();
+      /** Help text of the selection entry. */
+      static std::string
+      selection_documentation();
+      /**
+       * Shared entries: Mesh genes, Population size, Generations, Seed,
+       * Stall generations, Minimum block size.
+       */
+      static void
+      declare_common_parameters(dealii::ParameterHandler &prm);
+
+      /** Destructor. */
+      virtual ~Optimiser() = default;
+
+      /** Read the shared entries. */
+      virtual void
+      parse_common_parameters(dealii::ParameterHandler &prm);
+
+      /** Read the optimiser's own subsection: nothing by default. */
+      virtual void
+      parse_parameters(dealii::ParameterHandler &prm);
+
+      /** Whether this optimiser adapts at all (false for `none`). */
+      virtual bool
+      active() const;
+
+      /**
+       * Maximise @p fitness over [0, 1]^n with n = x0.size(), from a
+       * population that contains @p x0. @p progress is called after every
+       * generation. Non-finite fitness values count as the worst.
+       */
+      virtual Result
+      optimise(
+        const std::function<double(const std::vector<double> &)> &fitness,
+        const std::vector<double>                                &x0,
+        const std::function<void(const Generation &)>            &progress) = 0;
+
+      /** Population size. */
+      unsigned int population_size = 16;
+      /** Largest number of generations. */
+      unsigned int generations = 20;
+      /** Seed of the random numbers. */
+      unsigned int seed = 1;
+      /** Stop after this many generations without improvement (0: never). */
+      unsigned int stall_generations = 5;
+      /** Smallest block size, as a fraction of the parameter range. */
+      double minimum_block_size = 0.02;
+    };
+  } // namespace adaptation
+} // namespace masonry
+
+/** Register an optimiser (one line in the optimiser's .cc file). */
+#define MASONRY_REGISTER_OPTIMISER(classname, name, description) \
+  MASONRY_REGISTER_PLUGIN(masonry::adaptation::Optimiser,        \
+                          classname,                             \
+                          name,                                  \
+                          description)
+
+#endif
