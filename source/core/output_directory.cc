@@ -123,6 +123,10 @@ namespace masonry
         screen->sputc(static_cast<char>(c));
       if (file != nullptr)
         file->sputc(static_cast<char>(c));
+      // every line reaches the screen and log.txt at once, also when the
+      // screen is a file or a pipe (progress of long runs)
+      if (c == '\n')
+        sync();
       return c;
     }
 
@@ -133,6 +137,8 @@ namespace masonry
         screen->sputn(s, n);
       if (file != nullptr)
         file->sputn(s, n);
+      if (std::char_traits<char>::find(s, n, '\n') != nullptr)
+        sync();
       return n;
     }
 
