@@ -153,27 +153,19 @@ namespace masonry
         summary["live_load_magnitude"] = live_scale;
         summary["dead_load_magnitude"] = dead_load_magnitude();
         if (solution.status == lp::Status::unbounded)
-          {
-            summary["status"] = "mechanism";
-            summary["explanation"] =
-              "The linear program is unbounded: the dead loads alone do "
-              "positive work on a mechanism without dissipation, so the "
-              "vault cannot stand even without live load.";
-            pcout << "Result: mechanism — "
-                  << summary.at("explanation").as_string() << "\n";
-            return;
-          }
+          return report(context,
+                        "mechanism",
+                        "The linear program is unbounded: the dead loads "
+                        "alone do positive work on a mechanism without "
+                        "dissipation, so the vault cannot stand even "
+                        "without live load.");
         if (solution.status == lp::Status::infeasible)
-          {
-            summary["status"] = "no_collapse";
-            summary["explanation"] =
-              "The linear program is infeasible: no admissible mechanism "
-              "lets the live load do positive work, so no multiple of it "
-              "causes collapse (the load multiplier is infinite).";
-            pcout << "Result: no collapse — "
-                  << summary.at("explanation").as_string() << "\n";
-            return;
-          }
+          return report(context,
+                        "no_collapse",
+                        "The linear program is infeasible: no admissible "
+                        "mechanism lets the live load do positive work, so "
+                        "no multiple of it causes collapse (the load "
+                        "multiplier is infinite).");
 
         const double lambda        = solution.objective;
         summary["status"]          = "optimal";
@@ -184,27 +176,12 @@ namespace masonry
           pcout << "Warning: the load multiplier is negative: the dead loads "
                    "alone need a reversed live load to stand.\n";
 
-        // the mechanism, scaled so that its largest centroid translation
-        // is 1 cm (its magnitude is arbitrary)
-        double largest = 0;
-        for (unsigned int b = 0; b < blocks.size(); ++b)
-          for (unsigned int d = 0; d < 3; ++d)
-            largest = std::max(largest, std::abs(solution.x[6 * b + d]));
-        const double scale         = largest > 0 ? 0.01 / largest : 1;
+        // the mechanism, scaled to 1 cm (its magnitude is arbitrary)
+        const double scale         = centimetre_scale(solution.x);
         summary["mechanism_scale"] = scale;
-
-        const auto forces =
-          rigid_blocks::contact_forces(solution, live_scale, false);
-        record_support_reactions(forces, context);
-        write_thrust_line(forces, context);
-        rigid_blocks::write_results(
-          *model,
+        write_mechanism(
           rigid_blocks::motion_from_solution(problem, solution.x, scale),
-          [](const dealii::Point<3> &, const std::string &) {
-            return dealii::Tensor<1, 3>();
-          },
-          forces,
-          output_options,
+          rigid_blocks::contact_forces(solution, live_scale, false),
           context);
       }
 

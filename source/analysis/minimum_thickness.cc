@@ -95,28 +95,20 @@ namespace masonry
         const std::string status = bisect(context, lo, hi, steps);
         if (status == "stands_at_smallest_factor")
           {
-            summary["status"] = status;
-            summary["explanation"] =
-              "The vault stands at the smallest thickness factor tried "
-              "(`Smallest factor'): its strength does not depend on "
-              "thickness in this range (e.g. bonded supports or cohesive "
-              "joints).";
             summary["minimum_thickness_factor"] = hi;
-            pcout << "Result: " << summary.at("explanation").as_string()
-                  << "\n";
-            return;
+            return report(context,
+                          status,
+                          "The vault stands at the smallest thickness "
+                          "factor tried (`Smallest factor'): its strength "
+                          "does not depend on thickness in this range (e.g. "
+                          "bonded supports or cohesive joints).");
           }
         if (status == "mechanism")
-          {
-            summary["status"] = status;
-            summary["explanation"] =
-              "The vault collapses at every thickness factor up to "
-              "`Largest factor': it cannot stand on these supports (e.g. a "
-              "support is missing).";
-            pcout << "Result: mechanism — "
-                  << summary.at("explanation").as_string() << "\n";
-            return;
-          }
+          return report(context,
+                        status,
+                        "The vault collapses at every thickness factor up "
+                        "to `Largest factor': it cannot stand on these "
+                        "supports (e.g. a support is missing).");
 
         // the collapse mechanism just below the minimum: minimise the
         // dissipation with the work of the loads normalised to 1
@@ -141,17 +133,7 @@ namespace masonry
               << summary.at("minimum_thickness").as_number()
               << " m at the centre of the first patch, " << steps
               << " LP solves\n";
-        record_support_reactions(forces, context);
-        write_thrust_line(forces, context);
-        rigid_blocks::write_results(
-          *model,
-          motion,
-          [](const dealii::Point<3> &, const std::string &) {
-            return dealii::Tensor<1, 3>();
-          },
-          forces,
-          output_options,
-          context);
+        write_mechanism(motion, forces, context);
       }
 
     private:
@@ -277,12 +259,9 @@ namespace masonry
             return motion;
           }
         context.summary["collapse_load_multiplier"] = solution.objective;
-        double largest                              = 0;
-        for (unsigned int b = 0; b < model->blocks().size(); ++b)
-          for (unsigned int d = 0; d < 3; ++d)
-            largest = std::max(largest, std::abs(solution.x[6 * b + d]));
-        return rigid_blocks::motion_from_solution(
-          *last_problem, solution.x, largest > 0 ? 0.01 / largest : 1.);
+        return rigid_blocks::motion_from_solution(*last_problem,
+                                                  solution.x,
+                                                  centimetre_scale(solution.x));
       }
 
       double                                          tolerance       = 1e-5;

@@ -21,18 +21,54 @@ namespace masonry
 {
   namespace analysis
   {
-    namespace
+    std::set<std::string>
+    RigidBlockAnalysis::split_labels(const std::string &text)
     {
-      std::set<std::string>
-      split_labels(const std::string &text)
-      {
-        std::set<std::string> labels;
-        for (const auto &l : dealii::Utilities::split_string_list(text, ','))
-          if (!l.empty())
-            labels.insert(l);
-        return labels;
-      }
-    } // namespace
+      std::set<std::string> labels;
+      for (const auto &l : dealii::Utilities::split_string_list(text, ','))
+        if (!l.empty())
+          labels.insert(l);
+      return labels;
+    }
+
+    void
+    RigidBlockAnalysis::report(RunContext        &context,
+                               const std::string &status,
+                               const std::string &explanation)
+    {
+      context.summary["status"]      = status;
+      context.summary["explanation"] = explanation;
+      context.pcout << "Result: " << status << " — " << explanation << "\n";
+    }
+
+    double
+    RigidBlockAnalysis::centimetre_scale(const std::vector<double> &x) const
+    {
+      double largest = 0;
+      for (unsigned int b = 0; b < model->blocks().size(); ++b)
+        for (unsigned int d = 0; d < 3; ++d)
+          largest = std::max(largest, std::abs(x[6 * b + d]));
+      return largest > 0 ? 0.01 / largest : 1.;
+    }
+
+    void
+    RigidBlockAnalysis::write_mechanism(
+      const rigid_blocks::Motion               &motion,
+      const std::vector<std::array<double, 3>> &forces,
+      RunContext                               &context) const
+    {
+      record_support_reactions(forces, context);
+      write_thrust_line(forces, context);
+      rigid_blocks::write_results(
+        *model,
+        motion,
+        [](const dealii::Point<3> &, const std::string &) {
+          return dealii::Tensor<1, 3>();
+        },
+        forces,
+        output_options,
+        context);
+    }
 
     RigidBlockAnalysis::RigidBlockAnalysis() = default;
 

@@ -32,15 +32,6 @@ namespace masonry
         return std::chrono::duration<double>(Clock::now() - start).count();
       }
 
-      std::set<std::string>
-      split_labels(const std::string &text)
-      {
-        std::set<std::string> labels;
-        for (const auto &l : dealii::Utilities::split_string_list(text, ','))
-          if (!l.empty())
-            labels.insert(l);
-        return labels;
-      }
     } // namespace
 
     /**
@@ -143,29 +134,20 @@ namespace masonry
         summary["max_settlement"] = settlement_scale;
 
         if (solution.status == lp::Status::unbounded)
-          {
-            summary["status"] = "mechanism";
-            summary["explanation"] =
-              "The linear program is unbounded: a mechanism exists whose "
-              "loads do positive work without any support motion, so the "
-              "vault cannot stand under its own weight on these supports "
-              "(too thin, or a support is missing).";
-            pcout << "Result: mechanism — "
-                  << summary.at("explanation").as_string() << "\n";
-            return;
-          }
+          return report(
+            context,
+            "mechanism",
+            "The linear program is unbounded: a mechanism exists whose "
+            "loads do positive work without any support motion, so the "
+            "vault cannot stand under its own weight on these supports (too "
+            "thin, or a support is missing).");
         if (solution.status == lp::Status::infeasible)
-          {
-            summary["status"] = "incompatible";
-            summary["explanation"] =
-              "The linear program is infeasible: the prescribed support "
-              "motions cannot be followed by rigid blocks without "
-              "violating the joints' flow rule (e.g. bonded supports "
-              "moving apart).";
-            pcout << "Result: incompatible — "
-                  << summary.at("explanation").as_string() << "\n";
-            return;
-          }
+          return report(context,
+                        "incompatible",
+                        "The linear program is infeasible: the prescribed "
+                        "support motions cannot be followed by rigid blocks "
+                        "without violating the joints' flow rule (e.g. "
+                        "bonded supports moving apart).");
 
         const double scale = force_scale * settlement_scale;
         const double dissipation =

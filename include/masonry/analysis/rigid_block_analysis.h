@@ -169,6 +169,36 @@ namespace masonry
       unsigned int
       locate_block(const unsigned int patch, const dealii::Point<2> &uv) const;
 
+      /**
+       * End a run without an optimum: set `status` and `explanation` in the
+       * summary and print them.
+       */
+      static void
+      report(RunContext        &context,
+             const std::string &status,
+             const std::string &explanation);
+
+      /**
+       * The factor that makes the largest centroid translation of the
+       * block columns of @p x equal to 1 cm (a mechanism's magnitude is
+       * arbitrary).
+       */
+      double
+      centimetre_scale(const std::vector<double> &x) const;
+
+      /**
+       * Write the results of a mechanism with fixed supports: reactions,
+       * line of thrust, crack list and VTU/PNG.
+       */
+      void
+      write_mechanism(const rigid_blocks::Motion               &motion,
+                      const std::vector<std::array<double, 3>> &forces,
+                      RunContext                               &context) const;
+
+      /** Comma-separated labels as a set (empty entries dropped). */
+      static std::set<std::string>
+      split_labels(const std::string &text);
+
       /** Run the optimiser and set mesh_vertices to the best mesh. */
       void
       adapt(RunContext &context);
