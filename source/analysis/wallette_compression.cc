@@ -102,13 +102,16 @@ namespace masonry
                           "Final platen displacement divided by the height "
                           "of the wallette (dimensionless, > 0; the "
                           "displacement in m is this times the height).");
-        prm.declare_entry("Number of steps",
-                          "30",
-                          Integer(1, 100000),
-                          "Nominal number of load steps: the step is never "
-                          "larger than target / this number; it is halved "
-                          "when Newton fails and grows back (by the growth "
-                          "factor) after steps of at most 4 iterations.");
+        prm.declare_entry(
+          "Number of steps",
+          "30",
+          Integer(1, 100000),
+          "Nominal number of load steps: the step is never "
+          "larger than target / this number; it is halved "
+          "when Newton fails and grows back (by the growth "
+          "factor) after two consecutive steps of at most 2 iterations or a "
+          "third of the "
+          "maximum Newton iterations.");
         prm.declare_entry("Maximum cut-backs",
                           "10",
                           Integer(0, 60),

@@ -959,11 +959,11 @@ namespace masonry
 
         curve.push_back({0, 0, 0, 0, 0, 0});
         write_vtu(0, 0);
-        const double                  target  = settings.target_displacement;
-        const double                  nominal = target / settings.n_steps;
-        double                        applied = 0, increment = nominal;
-        unsigned int                  consecutive_cutbacks = 0, step = 0;
-        std::string                   status = "completed", message;
+        const double target  = settings.target_displacement;
+        const double nominal = target / settings.n_steps;
+        double       applied = 0, increment = nominal;
+        unsigned int consecutive_cutbacks = 0, step = 0, easy_steps = 0;
+        std::string  status = "completed", message;
         TrilinosWrappers::MPI::Vector u_converged(u);
         while (std::abs(applied) < std::abs(target) * (1 - 1e-12))
           {
@@ -992,6 +992,7 @@ namespace masonry
                     break;
                   }
                 increment /= 2;
+                easy_steps = 0;
                 if (settings.progress)
                   pcout << "  cut-back: step halved to " << increment << " m\n";
                 continue;
@@ -1021,11 +1022,17 @@ namespace masonry
               write_vtu(step, p.strain);
             else if (last)
               write_vtu(step, p.strain);
-            if (its <= 4)
-              increment =
-                std::abs(increment * settings.growth) > std::abs(nominal) ?
-                  nominal :
-                  increment * settings.growth;
+            // grow after two consecutive easy steps
+            easy_steps =
+              its <= std::max(2u, settings.max_newton / 3) ? easy_steps + 1 : 0;
+            if (easy_steps >= 2)
+              {
+                increment =
+                  std::abs(increment * settings.growth) > std::abs(nominal) ?
+                    nominal :
+                    increment * settings.growth;
+                easy_steps = 0;
+              }
           }
         if (status != "completed" && settings.write_vtu)
           {
