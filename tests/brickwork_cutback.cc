@@ -5,9 +5,14 @@
  * a brittle joint snap back: no equilibrium exists beyond the peak under
  * displacement control, so the run stops with status `not converged` and a
  * message, after writing the curve up to the last converged step. In both
- * cases every value written is finite.
+ * cases every value written is finite. (3) Input errors found by
+ * --validate as one line naming the file, the line and the entry: a mesh
+ * that does not fit the english bond's closers, a fracture energy below
+ * f_t^2 / (2 k_n) (the law would snap back at a point), a sideways platen
+ * motion with frictionless platens.
  */
 #include "brickwork_tests.h"
+#include "tests.h"
 
 using namespace brickwork_tests;
 
@@ -65,4 +70,31 @@ main(int argc, char **argv)
         "snap-back: curve holds every converged step");
   check(std::isfinite(b.at("peak_stress").as_number()),
         "snap-back: summary finite");
+
+  const std::string head = "set Output directory = results\n"
+                           "set Analysis = wallette\n";
+  testing::write_file("mesh.prm",
+                      head + "subsection Wallette\n"
+                             "  set Elements along the length = 6\n"
+                             "end\n"
+                             "subsection Bond\n"
+                             "  set Pattern = english\n"
+                             "end\n");
+  testing::check_error(testing::run({"--validate", "mesh.prm"}));
+  testing::write_file("energy.prm",
+                      head + "subsection Interface law\n"
+                             "  subsection Bilinear\n"
+                             "    set Mode I fracture energy = 0.01\n"
+                             "  end\n"
+                             "end\n");
+  testing::check_error(testing::run({"--validate", "energy.prm"}));
+  testing::write_file("platen.prm",
+                      head + "subsection Wallette\n"
+                             "  set Platen lateral restraint = free\n"
+                             "  set Platen direction = 1, 0, 0\n"
+                             "end\n");
+  testing::check_error(testing::run({"--validate", "platen.prm"}));
+  testing::write_file("good.prm", head);
+  const testing::Result r = testing::run({"--validate", "good.prm"});
+  std::cout << "default wallette: exit code " << r.exit_code << ", " << r.out;
 }

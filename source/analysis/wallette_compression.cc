@@ -174,6 +174,18 @@ namespace masonry
                           "(solution.pvd: displacement in m, stress in Pa, "
                           "MPI subdomain; interfaces.pvd: damage, normal "
                           "opening and slip in m, joint type).");
+        prm.declare_entry("Gauge length",
+                          "0",
+                          Double(0),
+                          "Length of a virtual displacement transducer "
+                          "(LVDT) on the front face (y = 0) at mid-length, "
+                          "centred at mid-height, m (>= 0; its ends snap "
+                          "to the nearest mesh points, the length used is "
+                          "reported as gauge_length). Its strain along the "
+                          "platen direction is written as gauge_strain in "
+                          "curve.csv, with gauge_strain_at_peak and "
+                          "initial_modulus_gauge in summary.json; 0: no "
+                          "gauge (strain over the whole height only).");
         prm.declare_entry("Write plot",
                           "true",
                           Bool(),
@@ -226,6 +238,7 @@ namespace masonry
         s.vtu_interval     = prm.get_integer("Output interval");
         s.write_vtu        = prm.get_bool("Write VTU");
         s.write_plot       = prm.get_bool("Write plot");
+        s.gauge_length     = prm.get_double("Gauge length");
       }
 
       void
@@ -236,7 +249,7 @@ namespace masonry
         law      = plugins::Registry<brickwork::InterfaceLaw>::create(prm);
         // lay the bricks now so that --validate finds a mesh that does not
         // fit the bond
-        plugins::ParsePathScope scope("Wallette compression");
+        plugins::ParsePathScope scope("Wallette");
         boxes = bond->layout(s.size);
         brickwork::check_mesh(boxes, s);
         s.target_displacement = target_strain * s.size.height * s.size.courses;

@@ -112,6 +112,7 @@ namespace masonry
       struct CurvePoint
       {
         double       displacement, strain, force, stress, max_damage;
+        double       gauge_strain;
         unsigned int newton;
       };
 
@@ -201,6 +202,9 @@ namespace masonry
           n_joints_of_type{{0, 0, 0}};
         std::vector<CurvePoint>                     curve;
         std::vector<std::pair<double, std::string>> pvd, pvd_interfaces;
+        /** DOFs of the two gauge points and their distance. */
+        std::array<std::array<types::global_dof_index, 3>, 2> gauge_dofs;
+        double                                                gauge_span = 0;
         unsigned int total_newton = 0, total_cutbacks = 0;
         unsigned int n_solves         = 0;
         double       seconds_assembly = 0, seconds_solve = 0;
@@ -403,6 +407,31 @@ namespace masonry
         for (const auto &td : top_dofs)
           if (zero_constraints.is_constrained(td.first))
             constrained_top.push_back(td);
+
+        if (settings.gauge_length > 0)
+          {
+            // the mesh vertices nearest to the ends of the gauge
+            const Point<3> ends[2] = {
+              Point<3>(length / 2, 0, (height - settings.gauge_length) / 2),
+              Point<3>(length / 2, 0, (height + settings.gauge_length) / 2)};
+            double   best[2] = {1e300, 1e300};
+            Point<3> where[2];
+            for (const auto &cell : dof_handler.active_cell_iterators())
+              for (const unsigned int v : cell->vertex_indices())
+                if (std::abs(cell->vertex(v)[1]) < tol)
+                  for (unsigned int e = 0; e < 2; ++e)
+                    if (cell->vertex(v).distance(ends[e]) < best[e] - tol)
+                      {
+                        best[e]  = cell->vertex(v).distance(ends[e]);
+                        where[e] = cell->vertex(v);
+                        for (unsigned int d = 0; d < 3; ++d)
+                          gauge_dofs[e][d] = cell->vertex_dof_index(v, d);
+                      }
+            gauge_span = where[1][2] - where[0][2];
+            AssertThrow(gauge_span > 0,
+                        ExcMessage("the gauge length is shorter than an "
+                                   "element: no two mesh points along it"));
+          }
 
         DynamicSparsityPattern dsp(relevant);
         DoFTools::make_sparsity_pattern(dof_handler,
@@ -868,11 +897,12 @@ namespace masonry
             std::ofstream out(csv);
             out << std::setprecision(12);
             out << "step,displacement_m,strain,force_N,stress_Pa,"
-                   "newton_iterations,max_damage\n";
+                   "newton_iterations,max_damage,gauge_strain\n";
             for (unsigned int i = 0; i < curve.size(); ++i)
               out << i << "," << curve[i].displacement << "," << curve[i].strain
                   << "," << curve[i].force << "," << curve[i].stress << ","
-                  << curve[i].newton << "," << curve[i].max_damage << "\n";
+                  << curve[i].newton << "," << curve[i].max_damage << ","
+                  << curve[i].gauge_strain << "\n";
           }
         if (settings.write_plot)
           {
@@ -920,6 +950,15 @@ namespace masonry
         summary["strain_at_peak"] = strain_at_peak;
         summary["initial_modulus"] =
           curve.size() > 1 ? curve[1].stress / curve[1].strain : 0.;
+        if (gauge_span > 0)
+          {
+            summary["gauge_length"] = gauge_span;
+            for (const auto &p : curve)
+              if (p.stress == peak)
+                summary["gauge_strain_at_peak"] = p.gauge_strain;
+            summary["initial_modulus_gauge"] =
+              curve.size() > 1 ? curve[1].stress / curve[1].gauge_strain : 0.;
+          }
         summary["final_stress"]  = curve.back().stress;
         summary["final_strain"]  = curve.back().strain;
         summary["external_work"] = work;
@@ -957,7 +996,7 @@ namespace masonry
               << ", collar " << n_joints_of_type[2] << " / "
               << n_faces_of_type[2] << "\n";
 
-        curve.push_back({0, 0, 0, 0, 0, 0});
+        curve.push_back({0, 0, 0, 0, 0, 0, 0});
         write_vtu(0, 0);
         const double target  = settings.target_displacement;
         const double nominal = target / settings.n_steps;
@@ -1010,6 +1049,15 @@ namespace masonry
             p.stress       = force / gross_area;
             p.newton       = its;
             p.max_damage   = max_damage();
+            p.gauge_strain = 0;
+            if (gauge_span > 0)
+              {
+                ghosted = u;
+                for (unsigned int d = 0; d < 3; ++d)
+                  p.gauge_strain +=
+                    (ghosted[gauge_dofs[1][d]] - ghosted[gauge_dofs[0][d]]) *
+                    settings.direction[d] / gauge_span;
+              }
             curve.push_back(p);
             if (settings.progress)
               pcout << "Step " << step << ": strain " << std::setprecision(4)

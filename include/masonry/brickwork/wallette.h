@@ -60,6 +60,11 @@ namespace masonry
       bool write_plot = true;
       /** Print one line per converged step. */
       bool progress = true;
+      /**
+       * Length of a virtual LVDT on the front face (y = 0) at mid-length,
+       * centred at mid-height (m); 0: no gauge.
+       */
+      double gauge_length = 0;
     };
 
     /** Mesh spacing in x, y, z (m). */
