@@ -4,7 +4,12 @@
  * and elastic joints between frictionless platens, which is uniaxial:
  *   E_app = H / (sum over bricks h_b / E_b + sum over bed joints 1 / k_n),
  * with the strain over the height and over a gauge as long as the height.
+ * Perfectly bonded (`Joints = bonded`), the prism has the bricks' modulus.
+ * The Lourenco-Rots helper gives k_n = 2.5e11 Pa/m for E_u = 10 GPa,
+ * E_m = 2 GPa, h_m = 10 mm (REFERENCES.md part B).
  */
+#include <masonry/brickwork/interface_law.h>
+
 #include "brickwork_tests.h"
 
 using namespace brickwork_tests;
@@ -101,4 +106,26 @@ main(int argc, char **argv)
                 name + ": modulus (height and full-height gauge) and final "
                        "stress = series formula to 1e-8");
         }
+
+  // perfectly bonded: no interfaces, the modulus of the bricks
+  {
+    std::ostringstream p;
+    p << "subsection Bond\nset Pattern = stretcher\nend\n"
+      << "subsection Brick material\nsubsection Elastic\n"
+      << "set Young's modulus = " << E << "\n"
+      << "set Poisson's ratio = " << nu << "\nend\nend\n";
+    const masonry::Json s =
+      run("bonded",
+          prm("set Courses = 3\nset Length in bricks = 2\n"
+              "set Platen lateral restraint = free\nset Joints = bonded\n"
+              "set Target strain = 0.001\nset Number of steps = 1\n",
+              p.str()));
+    check(relative(s.at("initial_modulus").as_number(), E) < 1e-8 &&
+            s.at("n_bed_interface_faces").as_number() == 0 &&
+            s.at("n_head_interface_faces").as_number() == 0,
+          "bonded stretcher prism: no interfaces, modulus = E to 1e-8");
+  }
+  check(relative(masonry::brickwork::lourenco_rots_stiffness(10e9, 2e9, 0.01),
+                 2.5e11) < 1e-14,
+        "Lourenco-Rots stiffness: 2.5e11 Pa/m");
 }

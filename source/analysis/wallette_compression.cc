@@ -186,6 +186,24 @@ namespace masonry
                           "curve.csv, with gauge_strain_at_peak and "
                           "initial_modulus_gauge in summary.json; 0: no "
                           "gauge (strain over the whole height only).");
+        prm.declare_entry(
+          "Joints",
+          "interfaces",
+          Selection("interfaces|bonded"),
+          "`interfaces': every joint is a zero-thickness interface of the "
+          "`Interface law'; `bonded': the bricks share the vertices of "
+          "coincident faces, so the wallette is one continuum without "
+          "joints (a perfectly bonded reference).");
+        prm.declare_entry(
+          "Write CalculiX input",
+          "false",
+          Bool(),
+          "Also write calculix.inp (the mesh as C3D8 elements, the brick "
+          "material, the platen conditions and the final platen displacement "
+          "as one linear static step, for `ccx -i calculix') and "
+          "nodal_displacements.csv (this run's final displacements, m, in "
+          "the same node numbering). Needs `Joints = bonded' and an elastic "
+          "brick material.");
         prm.declare_entry("Write plot",
                           "true",
                           Bool(),
@@ -238,7 +256,13 @@ namespace masonry
         s.vtu_interval     = prm.get_integer("Output interval");
         s.write_vtu        = prm.get_bool("Write VTU");
         s.write_plot       = prm.get_bool("Write plot");
-        s.gauge_length     = prm.get_double("Gauge length");
+        s.bonded           = prm.get("Joints") == "bonded";
+        s.write_calculix   = prm.get_bool("Write CalculiX input");
+        AssertThrow(!s.write_calculix || s.bonded,
+                    ExcParameter("Write CalculiX input",
+                                 "needs `Joints = bonded' (CalculiX has no "
+                                 "interfaces of this model)"));
+        s.gauge_length = prm.get_double("Gauge length");
       }
 
       void

@@ -18,6 +18,7 @@
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/solver_control.h>
@@ -169,6 +170,8 @@ namespace masonry
         write_vtu(const unsigned int step, const double time);
         void
         write_curve(Json &summary);
+        void
+        write_calculix();
 
         const std::vector<Box>            &boxes;
         const BrickMaterial               &material;
@@ -253,6 +256,13 @@ namespace masonry
           }
         n_bricks   = boxes.size();
         gross_area = length * thickness;
+        if (settings.bonded)
+          {
+            SubCellData               sub;
+            std::vector<unsigned int> considered;
+            GridTools::delete_duplicated_vertices(
+              vertices, cells, sub, considered, 1e-9 * height);
+          }
         triangulation.create_triangulation(vertices, cells, SubCellData());
       }
 
@@ -965,6 +975,86 @@ namespace masonry
         summary["max_damage"]    = curve.back().max_damage;
       }
 
+
+      void
+      Model::write_calculix()
+      {
+        // the nodes used by the cells, numbered from 1 in vertex order
+        ghosted                       = u;
+        const auto               &all = triangulation.get_vertices();
+        std::vector<unsigned int> node(all.size(), 0);
+        std::vector<std::array<types::global_dof_index, 3>> dofs(all.size());
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          for (const unsigned int v : cell->vertex_indices())
+            {
+              node[cell->vertex_index(v)] = 1;
+              for (unsigned int d = 0; d < 3; ++d)
+                dofs[cell->vertex_index(v)][d] = cell->vertex_dof_index(v, d);
+            }
+        unsigned int n = 0;
+        for (auto &i : node)
+          if (i)
+            i = ++n;
+        const std::string inp = context.output.file("calculix.inp");
+        const std::string csv = context.output.file("nodal_displacements.csv");
+        if (Utilities::MPI::this_mpi_process(comm) != 0)
+          return;
+        const double  tol = 1e-9 * height;
+        std::ofstream out(inp);
+        // CalculiX reads fields of at most 20 characters
+        out << std::setprecision(15);
+        out << "** masonry wallette: " << triangulation.n_active_cells()
+            << " C3D8 elements, bottom fixed, top moved by "
+            << settings.target_displacement << " m along ("
+            << settings.direction[0] << ", " << settings.direction[1] << ", "
+            << settings.direction[2] << ")\n*NODE, NSET=NALL\n";
+        for (unsigned int v = 0; v < all.size(); ++v)
+          if (node[v])
+            out << node[v] << ", " << all[v][0] << ", " << all[v][1] << ", "
+                << all[v][2] << "\n";
+        out << "*ELEMENT, TYPE=C3D8, ELSET=EALL\n";
+        const unsigned int order[8] = {0, 1, 3, 2, 4, 5, 7, 6};
+        unsigned int       e        = 0;
+        for (const auto &cell : triangulation.active_cell_iterators())
+          {
+            out << ++e;
+            for (const unsigned int v : order)
+              out << ", " << node[cell->vertex_index(v)];
+            out << "\n";
+          }
+        for (const bool top : {false, true})
+          {
+            out << "*NSET, NSET=" << (top ? "TOP" : "BOTTOM") << "\n";
+            unsigned int k = 0;
+            for (unsigned int v = 0; v < all.size(); ++v)
+              if (node[v] && std::abs(all[v][2] - (top ? height : 0.)) < tol)
+                out << node[v] << (++k % 8 == 0 ? ",\n" : ", ");
+            out << "\n";
+          }
+        out << "*MATERIAL, NAME=BRICK\n*ELASTIC\n"
+            << material.youngs_modulus() << ", " << material.poissons_ratio()
+            << "\n*SOLID SECTION, ELSET=EALL, MATERIAL=BRICK\n"
+            << "*STEP\n*STATIC\n*BOUNDARY\n";
+        for (unsigned int d = 0; d < 3; ++d)
+          if (settings.lateral_fixed || d == 2)
+            out << "BOTTOM, " << d + 1 << ", " << d + 1 << "\n";
+        for (unsigned int d = 0; d < 3; ++d)
+          if (settings.lateral_fixed || d == 2)
+            out << "TOP, " << d + 1 << ", " << d + 1 << ", " << std::scientific
+                << std::setprecision(12)
+                << settings.target_displacement * settings.direction[d]
+                << std::defaultfloat << std::setprecision(15) << "\n";
+        out << "*NODE PRINT, NSET=NALL\nU\n*NODE PRINT, NSET=TOP, "
+               "TOTALS=ONLY\nRF\n*END STEP\n";
+        std::ofstream d(csv);
+        d << std::setprecision(17) << "node,x,y,z,u_x,u_y,u_z\n";
+        for (unsigned int v = 0; v < all.size(); ++v)
+          if (node[v])
+            d << node[v] << "," << all[v][0] << "," << all[v][1] << ","
+              << all[v][2] << "," << ghosted[dofs[v][0]] << ","
+              << ghosted[dofs[v][1]] << "," << ghosted[dofs[v][2]] << "\n";
+      }
+
       void
       Model::run()
       {
@@ -1088,6 +1178,8 @@ namespace masonry
             write_vtu(step, curve.back().strain);
           }
         write_curve(summary);
+        if (settings.write_calculix)
+          write_calculix();
         const double seconds =
           std::chrono::duration<double>(Clock::now() - start).count();
         summary["status"] = status;

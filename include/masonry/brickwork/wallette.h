@@ -65,6 +65,17 @@ namespace masonry
        * centred at mid-height (m); 0: no gauge.
        */
       double gauge_length = 0;
+      /**
+       * Merge the coincident vertices of neighbouring bricks (a perfectly
+       * bonded continuum without interfaces, as a reference).
+       */
+      bool bonded = false;
+      /**
+       * Write the mesh and the final platen displacement as a CalculiX
+       * input (calculix.inp) and the computed nodal displacements
+       * (nodal_displacements.csv) in the same numbering.
+       */
+      bool write_calculix = false;
     };
 
     /** Mesh spacing in x, y, z (m). */
