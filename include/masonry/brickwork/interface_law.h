@@ -1,0 +1,106 @@
+/**
+ * @file
+ * Traction–separation laws of the zero-thickness joints between enlarged
+ * bricks (`subsection Interface law`, `set Law = ...`).
+ */
+#ifndef masonry_brickwork_interface_law_h
+#define masonry_brickwork_interface_law_h
+
+#include <masonry/core/plugins.h>
+
+#include <array>
+
+namespace masonry
+{
+  namespace brickwork
+  {
+    /** State of an interface integration point (irreversible). */
+    struct InterfaceHistory
+    {
+      /** Scalar damage, 0 (intact) to 1 (fully debonded). */
+      double damage = 0;
+    };
+
+    /** Vectors and matrices in the local frame (normal, shear 1, shear 2). */
+    using Local3  = std::array<double, 3>;
+    using Local33 = std::array<std::array<double, 3>, 3>;
+
+    /**
+     * Penalty stiffness of a joint of thickness @p h_m (m) whose mortar and
+     * unit moduli (Pa) are @p E_m and @p E_u when the bricks are enlarged
+     * (Lourenço & Rots 1997): k = E_u E_m / (h_m (E_u − E_m)), Pa/m. The same
+     * formula gives the shear stiffness from the shear moduli.
+     */
+    double
+    lourenco_rots_stiffness(const double E_u,
+                            const double E_m,
+                            const double h_m);
+
+    /**
+     * Base class of interface laws. The opening (jump of the displacement
+     * from the lower-coordinate brick to the other) is given in the local
+     * frame: component 0 along the normal (positive opening), 1 and 2 the
+     * slips.
+     */
+    class InterfaceLaw
+    {
+    public:
+      /** Parameters live in `subsection Interface law`. */
+      static constexpr const char *registry_section = "Interface law";
+      /** The selection entry: `set Law = ...`. */
+      static constexpr const char *registry_entry = "Law";
+      /** Default selection: "bilinear". */
+      static const char *
+      default_plugin();
+      /** Help text of the selection entry. */
+      static std::string
+      selection_documentation();
+      /** Entries shared by all laws: the penalty stiffnesses. */
+      static void
+      declare_common_parameters(dealii::ParameterHandler &prm);
+
+      virtual ~InterfaceLaw() = default;
+
+      /** Read the penalty stiffnesses. */
+      virtual void
+      parse_common_parameters(dealii::ParameterHandler &prm);
+      /** Read this law's own subsection: nothing by default. */
+      virtual void
+      parse_parameters(dealii::ParameterHandler &prm);
+
+      /**
+       * Traction @p t (Pa) and consistent tangent @p tangent (Pa/m) for the
+       * opening @p jump (m), starting from the converged @p old state;
+       * @p updated receives the new state (accepted by the caller only
+       * when the load step converges).
+       */
+      virtual void
+      evaluate(const Local3           &jump,
+               const InterfaceHistory &old,
+               InterfaceHistory       &updated,
+               Local3                 &t,
+               Local33                &tangent) const = 0;
+
+      /** Whether the law is linear (tangent independent of the state). */
+      virtual bool
+      is_linear() const
+      {
+        return false;
+      }
+
+      /** Normal penalty stiffness, Pa/m. */
+      double normal_stiffness = 0;
+      /** Shear penalty stiffness, Pa/m. */
+      double shear_stiffness = 0;
+    };
+  } // namespace brickwork
+} // namespace masonry
+
+/** Register an interface law (one line in its .cc file). */
+#define MASONRY_REGISTER_INTERFACE_LAW(classname, name, description) \
+  MASONRY_REGISTER_PLUGIN(masonry::brickwork::InterfaceLaw,          \
+                          classname,                                 \
+                          name,                                      \
+                          description)
+
+#endif

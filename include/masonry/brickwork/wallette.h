@@ -1,0 +1,102 @@
+/**
+ * @file
+ * The mesoscale wallette model: mesh of enlarged bricks, joints found as
+ * coincident face pairs, Newton solution under a displacement-controlled
+ * platen. The heavy deal.II machinery lives in wallette.cc; this header only
+ * carries the settings.
+ */
+#ifndef masonry_brickwork_wallette_h
+#define masonry_brickwork_wallette_h
+
+#include <masonry/brickwork/bond.h>
+#include <masonry/core/run_context.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace masonry
+{
+  namespace brickwork
+  {
+    class BrickMaterial;
+    class InterfaceLaw;
+
+    /** Everything the wallette model needs besides its plugins. */
+    struct WalletteSettings
+    {
+      /** Sizes of the enlarged brick and of the wallette. */
+      WalletteSize size;
+      /** Elements along the enlarged brick's length, width and height: the
+       * mesh spacing is length/n_l, width/n_w, height/n_h everywhere. */
+      unsigned int n_l = 4, n_w = 2, n_h = 2;
+      /** Platens hold the wall faces laterally (true) or let them slide. */
+      bool lateral_fixed = false;
+      /** Unit direction of the top platen's motion. */
+      std::array<double, 3> direction = {{0, 0, -1}};
+      /** Final platen displacement (m, along direction). */
+      double target_displacement = 0;
+      /** Nominal number of steps (the largest step is target / n_steps). */
+      unsigned int n_steps = 50;
+      /** Consecutive halvings of a step before the run stops. */
+      unsigned int max_cutbacks = 10;
+      /** Factor on the step after an easy step (up to the nominal step). */
+      double growth = 2;
+      /** Newton: iterations and relative residual tolerance. */
+      unsigned int max_newton       = 20;
+      double       newton_tolerance = 1e-8;
+      bool         line_search      = true;
+      /** "direct", "direct klu", "cg amg" or "gmres amg". */
+      std::string linear_solver = "direct";
+      /** Relative tolerance of the iterative solvers. */
+      double linear_tolerance = 1e-10;
+      /** Gauss (true) or Lobatto (false) points on interfaces. */
+      bool gauss = false;
+      /** Write VTU every this many converged steps (0: only the last). */
+      unsigned int vtu_interval = 10;
+      /** Write VTU/PVD at all. */
+      bool write_vtu = true;
+      /** Render curve.png with matplotlib. */
+      bool write_plot = true;
+      /** Print one line per converged step. */
+      bool progress = true;
+      /**
+       * Length of a virtual LVDT on the front face (y = 0) at mid-length,
+       * centred at mid-height (m); 0: no gauge.
+       */
+      double gauge_length = 0;
+      /**
+       * Merge the coincident vertices of neighbouring bricks (a perfectly
+       * bonded continuum without interfaces, as a reference).
+       */
+      bool bonded = false;
+      /**
+       * Write the mesh and the final platen displacement as a CalculiX
+       * input (calculix.inp) and the computed nodal displacements
+       * (nodal_displacements.csv) in the same numbering.
+       */
+      bool write_calculix = false;
+    };
+
+    /** Mesh spacing in x, y, z (m). */
+    std::array<double, 3>
+    mesh_spacing(const WalletteSettings &settings);
+
+    /**
+     * Check that every box is a whole number of mesh cells in each
+     * direction; throws an ExcParameter naming the entry to change.
+     */
+    void
+    check_mesh(const std::vector<Box> &boxes, const WalletteSettings &settings);
+
+    /** Build, solve and write the results of a wallette under a platen. */
+    void
+    run_wallette(const std::vector<Box> &boxes,
+                 const BrickMaterial    &material,
+                 const InterfaceLaw     &law,
+                 const WalletteSettings &settings,
+                 RunContext             &context);
+  } // namespace brickwork
+} // namespace masonry
+
+#endif

@@ -1,0 +1,311 @@
+/**
+ * @file
+ * The wallette analysis: a mesoscale model of bonded brickwork between two
+ * rigid platens, displacement controlled (monotonic protocol).
+ */
+#include <masonry/analysis/interface.h>
+#include <masonry/brickwork/bond.h>
+#include <masonry/brickwork/brick_material.h>
+#include <masonry/brickwork/interface_law.h>
+#include <masonry/brickwork/wallette.h>
+#include <masonry/core/parameters.h>
+
+#include <deal.II/base/utilities.h>
+
+#include <cmath>
+
+namespace masonry
+{
+  namespace analysis
+  {
+    /**
+     * A wallette of enlarged bricks joined by zero-thickness cohesive
+     * interfaces, loaded by a top platen moving by a prescribed
+     * displacement; the bottom platen is fixed.
+     */
+    class WalletteCompression : public Interface
+    {
+    public:
+      static void
+      declare_parameters(dealii::ParameterHandler &prm)
+      {
+        using dealii::Patterns::Bool;
+        using dealii::Patterns::Double;
+        using dealii::Patterns::Integer;
+        using dealii::Patterns::Selection;
+        prm.declare_entry("Brick length",
+                          "0.215",
+                          Double(0),
+                          "Length of a brick without mortar, m (> 0).");
+        prm.declare_entry("Brick width",
+                          "0.1025",
+                          Double(0),
+                          "Width of a brick without mortar, m (> 0).");
+        prm.declare_entry("Brick height",
+                          "0.065",
+                          Double(0),
+                          "Height of a brick without mortar, m (> 0).");
+        prm.declare_entry("Joint thickness",
+                          "0.010",
+                          Double(0),
+                          "Thickness of the mortar joints, m (>= 0): each "
+                          "enlarged brick is the brick plus half a joint on "
+                          "every side, and the joints become zero-thickness "
+                          "interfaces.");
+        prm.declare_entry("Courses",
+                          "5",
+                          Integer(1, 1000),
+                          "Number of courses (rows of bricks) of the "
+                          "wallette.");
+        prm.declare_entry("Length in bricks",
+                          "2",
+                          Integer(1, 1000),
+                          "Length of the wallette in (enlarged) brick "
+                          "lengths.");
+        prm.declare_entry("Elements along the length",
+                          "4",
+                          Integer(1, 64),
+                          "Hexahedra along the length of an enlarged "
+                          "stretcher; the mesh spacing (enlarged length / "
+                          "this number) is used for every brick, so that the "
+                          "meshes of neighbouring bricks match across the "
+                          "joints (even for the stretcher bond, a multiple "
+                          "of 4 for the english bond).");
+        prm.declare_entry("Elements along the width",
+                          "2",
+                          Integer(1, 64),
+                          "Hexahedra across the width of an enlarged "
+                          "stretcher (mesh spacing across the wall).");
+        prm.declare_entry("Elements along the height",
+                          "2",
+                          Integer(1, 64),
+                          "Hexahedra over the height of an enlarged brick.");
+        prm.declare_entry(
+          "Platen lateral restraint",
+          "fixed",
+          Selection("fixed|free"),
+          "`fixed': the platens hold the top and bottom faces in all "
+          "directions (full friction); `free': they only act along z "
+          "(frictionless; rigid motions in the plane are removed by "
+          "pinning two points of the bottom face).");
+        prm.declare_entry(
+          "Platen direction",
+          "0, 0, -1",
+          dealii::Patterns::List(Double(), 3, 3),
+          "Direction of the top platen's motion (x, y, z; normalised): "
+          "`0, 0, -1' compresses the wallette, `0, 0, 1' pulls it, `1, 0, "
+          "0' shears it (needs fixed platens). Stresses and strains are "
+          "reported along this direction.");
+        prm.declare_entry("Target strain",
+                          "0.003",
+                          Double(0),
+                          "Final platen displacement divided by the height "
+                          "of the wallette (dimensionless, > 0; the "
+                          "displacement in m is this times the height).");
+        prm.declare_entry(
+          "Number of steps",
+          "30",
+          Integer(1, 100000),
+          "Nominal number of load steps: the step is never "
+          "larger than target / this number; it is halved "
+          "when Newton fails and grows back (by the growth "
+          "factor) after two consecutive steps of at most 2 iterations or a "
+          "third of the "
+          "maximum Newton iterations.");
+        prm.declare_entry("Maximum cut-backs",
+                          "10",
+                          Integer(0, 60),
+                          "Consecutive halvings of a step before the run "
+                          "stops with status `not converged' (results up to "
+                          "the last converged step are written).");
+        prm.declare_entry("Step growth factor",
+                          "2",
+                          Double(1),
+                          "Factor on the step after an easy step "
+                          "(dimensionless, >= 1).");
+        prm.declare_entry("Maximum Newton iterations",
+                          "20",
+                          Integer(1, 1000),
+                          "Newton-Raphson iterations of a step before it is "
+                          "cut back.");
+        prm.declare_entry("Newton tolerance",
+                          "1e-8",
+                          Double(0),
+                          "Convergence when the out-of-balance force (l2 "
+                          "norm over the free DOFs, N) is below this times "
+                          "the norm of the platen reactions "
+                          "(dimensionless).");
+        prm.declare_entry("Line search",
+                          "true",
+                          Bool(),
+                          "Backtracking line search on the residual norm "
+                          "(halving the Newton correction up to 5 times).");
+        prm.declare_entry(
+          "Linear solver",
+          "direct",
+          Selection("direct|direct klu|cg amg|gmres amg"),
+          "`direct': sparse LU by MUMPS through Trilinos Amesos (parallel); "
+          "`direct klu': Amesos KLU (serial, gathers the matrix); `cg amg': "
+          "conjugate gradients with Trilinos ML algebraic multigrid (for "
+          "symmetric tangents: elastic joints); `gmres amg': GMRES with the "
+          "same preconditioner (any tangent).");
+        prm.declare_entry("Linear solver tolerance",
+                          "1e-10",
+                          Double(0),
+                          "Relative residual tolerance of the iterative "
+                          "linear solvers (dimensionless).");
+        prm.declare_entry("Interface integration",
+                          "lobatto",
+                          Selection("lobatto|gauss"),
+                          "Integration points of the interface elements: "
+                          "`lobatto' (2 x 2 points at the nodes, avoids "
+                          "traction oscillations at high penalty) or "
+                          "`gauss' (2 x 2 Gauss points).");
+        prm.declare_entry("Output interval",
+                          "10",
+                          Integer(0, 100000),
+                          "Write VTU/PVTU (bricks) and VTU (interfaces) "
+                          "every this many converged steps, and after the "
+                          "last; 0: only the initial and the last state.");
+        prm.declare_entry("Write VTU",
+                          "true",
+                          Bool(),
+                          "Write the VTU/PVTU/PVD time series "
+                          "(solution.pvd: displacement in m, stress in Pa, "
+                          "MPI subdomain; interfaces.pvd: damage, normal "
+                          "opening and slip in m, joint type).");
+        prm.declare_entry("Gauge length",
+                          "0",
+                          Double(0),
+                          "Length of a virtual displacement transducer "
+                          "(LVDT) on the front face (y = 0) at mid-length, "
+                          "centred at mid-height, m (>= 0; its ends snap "
+                          "to the nearest mesh points, the length used is "
+                          "reported as gauge_length). Its strain along the "
+                          "platen direction is written as gauge_strain in "
+                          "curve.csv, with gauge_strain_at_peak and "
+                          "initial_modulus_gauge in summary.json; 0: no "
+                          "gauge (strain over the whole height only).");
+        prm.declare_entry(
+          "Joints",
+          "interfaces",
+          Selection("interfaces|bonded"),
+          "`interfaces': every joint is a zero-thickness interface of the "
+          "`Interface law'; `bonded': the bricks share the vertices of "
+          "coincident faces, so the wallette is one continuum without "
+          "joints (a perfectly bonded reference).");
+        prm.declare_entry(
+          "Write CalculiX input",
+          "false",
+          Bool(),
+          "Also write calculix.inp (the mesh as C3D8 elements, the brick "
+          "material, the platen conditions and the final platen displacement "
+          "as one linear static step, for `ccx -i calculix') and "
+          "nodal_displacements.csv (this run's final displacements, m, in "
+          "the same node numbering). Needs `Joints = bonded' and an elastic "
+          "brick material.");
+        prm.declare_entry("Write plot",
+                          "true",
+                          Bool(),
+                          "Draw the stress-strain curve into curve.png "
+                          "(matplotlib, /usr/bin/python3).");
+      }
+
+      void
+      parse_parameters(dealii::ParameterHandler &prm) override
+      {
+        const double joint    = prm.get_double("Joint thickness");
+        auto         positive = [&](const std::string &entry) {
+          const double v = prm.get_double(entry);
+          AssertThrow(v > 0,
+                      ExcParameter(entry,
+                                   "must be positive, got " + prm.get(entry)));
+          return v;
+        };
+        s.size.length      = positive("Brick length") + joint;
+        s.size.width       = positive("Brick width") + joint;
+        s.size.height      = positive("Brick height") + joint;
+        s.size.courses     = prm.get_integer("Courses");
+        s.size.bricks_long = prm.get_integer("Length in bricks");
+        s.n_l              = prm.get_integer("Elements along the length");
+        s.n_w              = prm.get_integer("Elements along the width");
+        s.n_h              = prm.get_integer("Elements along the height");
+        s.lateral_fixed    = prm.get("Platen lateral restraint") == "fixed";
+        const auto dir =
+          split_doubles(prm.get("Platen direction"), "Platen direction");
+        const double norm =
+          std::sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+        AssertThrow(norm > 0,
+                    ExcParameter("Platen direction", "must not be zero"));
+        for (unsigned int d = 0; d < 3; ++d)
+          s.direction[d] = dir[d] / norm;
+        AssertThrow(s.lateral_fixed || (dir[0] == 0 && dir[1] == 0),
+                    ExcParameter("Platen direction",
+                                 "a sideways motion needs `Platen lateral "
+                                 "restraint = fixed'"));
+        target_strain      = positive("Target strain");
+        s.n_steps          = prm.get_integer("Number of steps");
+        s.max_cutbacks     = prm.get_integer("Maximum cut-backs");
+        s.growth           = prm.get_double("Step growth factor");
+        s.max_newton       = prm.get_integer("Maximum Newton iterations");
+        s.newton_tolerance = positive("Newton tolerance");
+        s.line_search      = prm.get_bool("Line search");
+        s.linear_solver    = prm.get("Linear solver");
+        s.linear_tolerance = positive("Linear solver tolerance");
+        s.gauss            = prm.get("Interface integration") == "gauss";
+        s.vtu_interval     = prm.get_integer("Output interval");
+        s.write_vtu        = prm.get_bool("Write VTU");
+        s.write_plot       = prm.get_bool("Write plot");
+        s.bonded           = prm.get("Joints") == "bonded";
+        s.write_calculix   = prm.get_bool("Write CalculiX input");
+        AssertThrow(!s.write_calculix || s.bonded,
+                    ExcParameter("Write CalculiX input",
+                                 "needs `Joints = bonded' (CalculiX has no "
+                                 "interfaces of this model)"));
+        s.gauge_length = prm.get_double("Gauge length");
+      }
+
+      void
+      setup(dealii::ParameterHandler &prm) override
+      {
+        bond     = plugins::Registry<brickwork::Bond>::create(prm);
+        material = plugins::Registry<brickwork::BrickMaterial>::create(prm);
+        law      = plugins::Registry<brickwork::InterfaceLaw>::create(prm);
+        // lay the bricks now so that --validate finds a mesh that does not
+        // fit the bond
+        plugins::ParsePathScope scope("Wallette");
+        boxes = bond->layout(s.size);
+        brickwork::check_mesh(boxes, s);
+        s.target_displacement = target_strain * s.size.height * s.size.courses;
+      }
+
+      void
+      run(RunContext &context) override
+      {
+        brickwork::run_wallette(boxes, *material, *law, s, context);
+      }
+
+    private:
+      brickwork::WalletteSettings               s;
+      double                                    target_strain = 0.003;
+      std::unique_ptr<brickwork::Bond>          bond;
+      std::unique_ptr<brickwork::BrickMaterial> material;
+      std::unique_ptr<brickwork::InterfaceLaw>  law;
+      std::vector<brickwork::Box>               boxes;
+    };
+  } // namespace analysis
+} // namespace masonry
+
+MASONRY_REGISTER_ANALYSIS(
+  masonry::analysis::WalletteCompression,
+  "wallette",
+  "Mesoscale model of a bonded brickwork wallette (prism) between rigid "
+  "platens: enlarged bricks (brick plus half joint) of 8-node hexahedra, "
+  "joints as zero-thickness interfaces (`Interface law'), bricks from "
+  "`Brick material', laid in the `Bond' pattern. The bottom platen is "
+  "fixed, the top one moves monotonically to the target strain under "
+  "displacement control (Newton-Raphson, line search, adaptive steps). "
+  "Writes curve.csv (stress = platen force / gross area, strain = platen "
+  "displacement / height), curve.png, VTU time series and summary.json "
+  "(peak_stress in Pa, strain_at_peak, initial_modulus in Pa, joint "
+  "counts, steps, Newton iterations, cut-backs, seconds).")

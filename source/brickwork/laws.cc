@@ -1,0 +1,365 @@
+/**
+ * @file
+ * Interface laws `elastic` and `bilinear`, brick material `elastic`.
+ */
+#include <masonry/brickwork/brick_material.h>
+#include <masonry/brickwork/interface_law.h>
+#include <masonry/core/parameters.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace masonry
+{
+  namespace brickwork
+  {
+    double
+    lourenco_rots_stiffness(const double E_u,
+                            const double E_m,
+                            const double h_m)
+    {
+      AssertThrow(E_u > E_m && E_m > 0 && h_m > 0,
+                  dealii::ExcMessage(
+                    "the Lourenco-Rots stiffness needs unit modulus > mortar "
+                    "modulus > 0 and a positive joint thickness"));
+      return E_u * E_m / (h_m * (E_u - E_m));
+    }
+
+    // ---------------------------------------------------------------------
+    const char *
+    InterfaceLaw::default_plugin()
+    {
+      return "bilinear";
+    }
+
+    std::string
+    InterfaceLaw::selection_documentation()
+    {
+      return "The traction-separation law of the zero-thickness joints "
+             "(bed, head and collar) between enlarged bricks. Tractions in "
+             "Pa, openings in m; the normal opening is positive when the "
+             "bricks separate.";
+    }
+
+    void
+    InterfaceLaw::declare_common_parameters(dealii::ParameterHandler &prm)
+    {
+      prm.declare_entry(
+        "Normal stiffness",
+        "2.5e11",
+        dealii::Patterns::Double(0),
+        "Penalty stiffness k_n of the joint normal to it, Pa/m (> 0). For "
+        "enlarged bricks Lourenco and Rots give k_n = E_u E_m / (h_m (E_u - "
+        "E_m)) with the unit and mortar moduli E_u, E_m (Pa) and the joint "
+        "thickness h_m (m): E_u = 10 GPa, E_m = 2 GPa, h_m = 10 mm give "
+        "2.5e11 Pa/m.");
+      prm.declare_entry("Shear stiffness",
+                        "1.0e11",
+                        dealii::Patterns::Double(0),
+                        "Penalty stiffness k_s of the joint in both "
+                        "directions of slip, Pa/m (> 0); the same formula "
+                        "as k_n with the shear moduli G_u, G_m.");
+    }
+
+    void
+    InterfaceLaw::parse_common_parameters(dealii::ParameterHandler &prm)
+    {
+      normal_stiffness = prm.get_double("Normal stiffness");
+      shear_stiffness  = prm.get_double("Shear stiffness");
+      AssertThrow(normal_stiffness > 0,
+                  ExcParameter("Normal stiffness", "must be positive"));
+      AssertThrow(shear_stiffness > 0,
+                  ExcParameter("Shear stiffness", "must be positive"));
+    }
+
+    void
+    InterfaceLaw::parse_parameters(dealii::ParameterHandler &)
+    {}
+
+    /** Linear joints: t = diag(k_n, k_s, k_s) [u]. */
+    class ElasticInterface : public InterfaceLaw
+    {
+    public:
+      static void
+      declare_parameters(dealii::ParameterHandler &)
+      {}
+
+      void
+      evaluate(const Local3 &jump,
+               const InterfaceHistory &,
+               InterfaceHistory &,
+               Local3  &t,
+               Local33 &tangent) const override
+      {
+        const double k[3] = {normal_stiffness,
+                             shear_stiffness,
+                             shear_stiffness};
+        for (unsigned int i = 0; i < 3; ++i)
+          {
+            t[i] = k[i] * jump[i];
+            for (unsigned int j = 0; j < 3; ++j)
+              tangent[i][j] = (i == j ? k[i] : 0);
+          }
+      }
+
+      bool
+      is_linear() const override
+      {
+        return true;
+      }
+    };
+
+    /**
+     * Bilinear mixed-mode cohesive law (Camanho & Davila 2002, with
+     * separate normal and shear penalties): quadratic onset, linear
+     * softening in the mixed-mode opening, Benzeggagh-Kenane energy.
+     */
+    class BilinearInterface : public InterfaceLaw
+    {
+    public:
+      static void
+      declare_parameters(dealii::ParameterHandler &prm)
+      {
+        prm.declare_entry("Tensile strength",
+                          "0.2e6",
+                          dealii::Patterns::Double(0),
+                          "Tensile strength f_t of the joint, Pa (> 0); "
+                          "typical 0.16-0.25 MPa.");
+        prm.declare_entry("Cohesion",
+                          "0.28e6",
+                          dealii::Patterns::Double(0),
+                          "Shear strength (cohesion) c of the joint, Pa "
+                          "(> 0); typical 1.4 f_t.");
+        prm.declare_entry("Mode I fracture energy",
+                          "15",
+                          dealii::Patterns::Double(0),
+                          "Fracture energy G_I in pure opening, J/m^2 = "
+                          "N/m (> 0, at least f_t^2 / (2 k_n)); typical "
+                          "12-18 N/m.");
+        prm.declare_entry("Mode II fracture energy",
+                          "100",
+                          dealii::Patterns::Double(0),
+                          "Fracture energy G_II in pure shear, J/m^2 = N/m "
+                          "(> 0, at least c^2 / (2 k_s)); typical 50-125 "
+                          "N/m.");
+        prm.declare_entry("BK exponent",
+                          "2",
+                          dealii::Patterns::Double(0),
+                          "Exponent eta of the Benzeggagh-Kenane mixed-mode "
+                          "criterion G_c = G_I + (G_II - G_I) (beta^2 / (1 "
+                          "+ beta^2))^eta, beta = slip / normal opening "
+                          "(dimensionless, > 0).");
+      }
+
+      void
+      parse_parameters(dealii::ParameterHandler &prm) override
+      {
+        f_t           = prm.get_double("Tensile strength");
+        c             = prm.get_double("Cohesion");
+        G_I           = prm.get_double("Mode I fracture energy");
+        G_II          = prm.get_double("Mode II fracture energy");
+        eta           = prm.get_double("BK exponent");
+        auto positive = [&](const double v, const std::string &entry) {
+          AssertThrow(v > 0, ExcParameter(entry, "must be positive"));
+        };
+        positive(f_t, "Tensile strength");
+        positive(c, "Cohesion");
+        positive(G_I, "Mode I fracture energy");
+        positive(G_II, "Mode II fracture energy");
+        positive(eta, "BK exponent");
+        // the common stiffnesses are parsed before this subsection
+        const double       min_I  = f_t * f_t / (2 * normal_stiffness);
+        const double       min_II = c * c / (2 * shear_stiffness);
+        std::ostringstream m;
+        m << "must be at least f_t^2 / (2 k_n) = " << min_I
+          << " J/m^2 (else the law snaps back at a point)";
+        AssertThrow(G_I > min_I,
+                    ExcParameter("Mode I fracture energy", m.str()));
+        std::ostringstream m2;
+        m2 << "must be at least c^2 / (2 k_s) = " << min_II << " J/m^2";
+        AssertThrow(G_II > min_II,
+                    ExcParameter("Mode II fracture energy", m2.str()));
+      }
+
+      /** Damage from the opening alone (no history). */
+      double
+      damage(const Local3 &jump) const
+      {
+        const double kn = normal_stiffness, ks = shear_stiffness;
+        const double dn  = jump[0];
+        const double ds  = std::sqrt(jump[1] * jump[1] + jump[2] * jump[2]);
+        const double dnp = std::max(dn, 0.);
+        const double dm  = std::sqrt(dnp * dnp + ds * ds);
+        if (dm == 0)
+          return 0;
+        const double dn0 = f_t / kn, ds0 = c / ks;
+        double       d0, k_eff, mix;
+        if (dn > 0)
+          {
+            const double b2 = (ds / dn) * (ds / dn);
+            d0 = dn0 * ds0 * std::sqrt((1 + b2) / (ds0 * ds0 + b2 * dn0 * dn0));
+            k_eff = (kn + b2 * ks) / (1 + b2);
+            mix   = b2 / (1 + b2);
+          }
+        else
+          {
+            d0    = ds0;
+            k_eff = ks;
+            mix   = 1;
+          }
+        const double G_c = G_I + (G_II - G_I) * std::pow(mix, eta);
+        const double df  = std::max(2 * G_c / (k_eff * d0), d0 * (1 + 1e-9));
+        if (dm <= d0)
+          return 0;
+        if (dm >= df)
+          return 1;
+        return df * (dm - d0) / (dm * (df - d0));
+      }
+
+      void
+      evaluate(const Local3           &jump,
+               const InterfaceHistory &old,
+               InterfaceHistory       &updated,
+               Local3                 &t,
+               Local33                &tangent) const override
+      {
+        const double k[3]  = {normal_stiffness,
+                              shear_stiffness,
+                              shear_stiffness};
+        const double trial = damage(jump);
+        const double d     = std::max(old.damage, trial);
+        updated.damage     = d;
+        // no damage of the normal stiffness in compression
+        const double f[3] = {jump[0] > 0 ? 1 - d : 1., 1 - d, 1 - d};
+        for (unsigned int i = 0; i < 3; ++i)
+          {
+            t[i] = f[i] * k[i] * jump[i];
+            for (unsigned int j = 0; j < 3; ++j)
+              tangent[i][j] = (i == j ? f[i] * k[i] : 0);
+          }
+        if (trial > old.damage && trial < 1)
+          {
+            // loading: derivative of the damage by central differences
+            // of the closed-form damage function
+            const double scale = std::max({std::abs(jump[0]),
+                                           std::abs(jump[1]),
+                                           std::abs(jump[2]),
+                                           f_t / normal_stiffness});
+            const double h     = 1e-7 * scale;
+            Local3       dd;
+            for (unsigned int j = 0; j < 3; ++j)
+              {
+                Local3 p = jump, m = jump;
+                p[j] += h;
+                m[j] -= h;
+                dd[j] = (damage(p) - damage(m)) / (2 * h);
+              }
+            for (unsigned int i = 0; i < 3; ++i)
+              if (i > 0 || jump[0] > 0)
+                for (unsigned int j = 0; j < 3; ++j)
+                  tangent[i][j] -= k[i] * jump[i] * dd[j];
+          }
+      }
+
+    private:
+      double f_t = 0, c = 0, G_I = 0, G_II = 0, eta = 2;
+    };
+
+    // ---------------------------------------------------------------------
+    const char *
+    BrickMaterial::default_plugin()
+    {
+      return "elastic";
+    }
+
+    std::string
+    BrickMaterial::selection_documentation()
+    {
+      return "The constitutive law of the enlarged bricks (brick plus half "
+             "a joint).";
+    }
+
+    void
+    BrickMaterial::declare_common_parameters(dealii::ParameterHandler &)
+    {}
+
+    void
+    BrickMaterial::parse_common_parameters(dealii::ParameterHandler &)
+    {}
+
+    void
+    BrickMaterial::parse_parameters(dealii::ParameterHandler &)
+    {}
+
+    /** Isotropic linear elasticity. */
+    class ElasticBrick : public BrickMaterial
+    {
+    public:
+      static void
+      declare_parameters(dealii::ParameterHandler &prm)
+      {
+        prm.declare_entry("Young's modulus",
+                          "10e9",
+                          dealii::Patterns::Double(0),
+                          "Young's modulus of the bricks, Pa (> 0).");
+        prm.declare_entry("Poisson's ratio",
+                          "0.15",
+                          dealii::Patterns::Double(-1, 0.5),
+                          "Poisson's ratio of the bricks (dimensionless, "
+                          "-1 < nu < 0.5).");
+      }
+
+      void
+      parse_parameters(dealii::ParameterHandler &prm) override
+      {
+        E  = prm.get_double("Young's modulus");
+        nu = prm.get_double("Poisson's ratio");
+        AssertThrow(E > 0, ExcParameter("Young's modulus", "must be positive"));
+        AssertThrow(nu > -1 && nu < 0.5,
+                    ExcParameter("Poisson's ratio",
+                                 "must lie strictly between -1 and 0.5"));
+      }
+
+      bool
+      is_linear() const override
+      {
+        return true;
+      }
+
+      double
+      youngs_modulus() const override
+      {
+        return E;
+      }
+
+      double
+      poissons_ratio() const override
+      {
+        return nu;
+      }
+
+    private:
+      double E = 10e9, nu = 0.15;
+    };
+  } // namespace brickwork
+} // namespace masonry
+
+MASONRY_REGISTER_INTERFACE_LAW(masonry::brickwork::ElasticInterface,
+                               "elastic",
+                               "Linear joints: traction = diag(k_n, k_s, "
+                               "k_s) x opening; never damage.")
+MASONRY_REGISTER_INTERFACE_LAW(
+  masonry::brickwork::BilinearInterface,
+  "bilinear",
+  "Bilinear mixed-mode cohesive law (Camanho-Davila): linear up to the "
+  "quadratic onset (t_n/f_t)^2 + (t_s/c)^2 = 1 (t_n > 0), then linear "
+  "softening of the mixed-mode opening d_m = sqrt(<d_n>^2 + d_s^2) to zero "
+  "traction at the opening that dissipates the Benzeggagh-Kenane energy "
+  "G_c. Damage never decreases; the normal stiffness is not damaged in "
+  "compression (closing joints stay stiff). In pure mode I the dissipated "
+  "energy per unit area is G_I, in pure mode II G_II.")
+MASONRY_REGISTER_BRICK_MATERIAL(masonry::brickwork::ElasticBrick,
+                                "elastic",
+                                "Isotropic linear elastic bricks: each cell "
+                                "matrix is computed once and reused.")

@@ -1,0 +1,1216 @@
+/**
+ * @file
+ * The wallette model: generator, interface detection, assembly of bricks and
+ * zero-thickness interfaces, Newton-Raphson with line search and adaptive
+ * steps, results (CSV, PNG, VTU/PVTU/PVD, summary.json).
+ */
+#include <masonry/brickwork/brick_material.h>
+#include <masonry/brickwork/interface_law.h>
+#include <masonry/brickwork/wallette.h>
+#include <masonry/core/output_directory.h>
+#include <masonry/core/parameters.h>
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/distributed/shared_tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_solver.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/numerics/data_out.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <map>
+#include <sstream>
+
+namespace masonry
+{
+  namespace brickwork
+  {
+    using namespace dealii;
+
+    std::array<double, 3>
+    mesh_spacing(const WalletteSettings &s)
+    {
+      return {
+        {s.size.length / s.n_l, s.size.width / s.n_w, s.size.height / s.n_h}};
+    }
+
+    namespace
+    {
+      const char *element_entry[3] = {"Elements along the length",
+                                      "Elements along the width",
+                                      "Elements along the height"};
+
+      /** Cells of @p box along direction @p d; 0 if not a whole number. */
+      unsigned int
+      divisions(const Box &box, const unsigned int d, const double h)
+      {
+        const double extent = box.upper[d] - box.lower[d];
+        const double n      = std::round(extent / h);
+        if (n < 1 || std::abs(n * h - extent) > 1e-9 * extent)
+          return 0;
+        return static_cast<unsigned int>(n);
+      }
+    } // namespace
+
+    void
+    check_mesh(const std::vector<Box> &boxes, const WalletteSettings &s)
+    {
+      const auto h = mesh_spacing(s);
+      for (const auto &b : boxes)
+        for (unsigned int d = 0; d < 3; ++d)
+          if (divisions(b, d, h[d]) == 0)
+            {
+              std::ostringstream m;
+              m << "a " << b.kind << " of the bond is "
+                << b.upper[d] - b.lower[d] << " m long in direction "
+                << "xyz"[d] << ", not a whole number of elements of " << h[d]
+                << " m (the half bats of the stretcher bond need an even "
+                   "number of elements along the length, the headers and "
+                   "closers of the english bond a multiple of 4)";
+              AssertThrow(false, ExcParameter(element_entry[d], m.str()));
+            }
+    }
+
+    namespace
+    {
+      using Clock = std::chrono::steady_clock;
+
+      /** A joint between two bricks: a pair of coincident cell faces. */
+      struct InterfaceFace
+      {
+        /** 0 bed (normal z), 1 head (normal x), 2 collar (normal y). */
+        unsigned int type;
+        /** Axis of the normal (from side A, lower coordinate, to B). */
+        unsigned int axis;
+        /** Whether this rank assembles it (owner of side A). */
+        bool owned;
+        /** Degrees of freedom: A vertices 0-3 then B, 3 components each. */
+        std::vector<types::global_dof_index> dofs;
+        /** Vertices of side A (face-lexicographic order). */
+        std::array<Point<3>, 4> vertices;
+        double                  area;
+        /** Bricks on both sides. */
+        unsigned int brick_a, brick_b;
+      };
+
+      /** Summary of one converged step. */
+      struct CurvePoint
+      {
+        double       displacement, strain, force, stress, max_damage;
+        double       gauge_strain;
+        unsigned int newton;
+      };
+
+      const char *type_name[3] = {"bed", "head", "collar"};
+
+      /** The whole model, for one run. */
+      class Model
+      {
+      public:
+        Model(const std::vector<Box> &boxes,
+              const BrickMaterial    &material,
+              const InterfaceLaw     &law,
+              const WalletteSettings &settings,
+              RunContext             &context)
+          : boxes(boxes)
+          , material(material)
+          , law(law)
+          , settings(settings)
+          , context(context)
+          , comm(context.mpi_communicator)
+          , pcout(context.pcout)
+          , triangulation(comm,
+                          Triangulation<3>::none,
+                          false,
+                          parallel::shared::Triangulation<3>::partition_metis)
+          , fe(FE_Q<3>(1), 3)
+          , dof_handler(triangulation)
+        {}
+
+        void
+        run();
+
+      private:
+        void
+        make_mesh();
+        void
+        find_interfaces();
+        void
+        setup_system();
+        void
+        assemble(const bool with_matrix);
+        bool
+        solve_step(const double displacement, unsigned int &iterations);
+        void
+        solve_linear(TrilinosWrappers::MPI::Vector       &du,
+                     const TrilinosWrappers::MPI::Vector &rhs);
+        void
+        set_platen(TrilinosWrappers::MPI::Vector &u, const double disp);
+        double
+        reaction() const;
+        double
+        max_damage() const;
+        void
+        write_vtu(const unsigned int step, const double time);
+        void
+        write_curve(Json &summary);
+        void
+        write_calculix();
+
+        const std::vector<Box>            &boxes;
+        const BrickMaterial               &material;
+        const InterfaceLaw                &law;
+        const WalletteSettings            &settings;
+        RunContext                        &context;
+        MPI_Comm                           comm;
+        ConditionalOStream                &pcout;
+        parallel::shared::Triangulation<3> triangulation;
+        FESystem<3>                        fe;
+        DoFHandler<3>                      dof_handler;
+        IndexSet                           owned, relevant;
+        AffineConstraints<double>          zero_constraints;
+        TrilinosWrappers::SparseMatrix     matrix;
+        /** Owned vectors; `ghosted` holds every entry on every rank. */
+        TrilinosWrappers::MPI::Vector u, f_int, ghosted;
+        std::vector<InterfaceFace>    interfaces;
+        unsigned int                  n_quad = 4;
+        std::array<double, 2>         q_points, q_weights;
+        std::vector<InterfaceHistory> history_old, history_new;
+        /** Platen DOFs with the component of each: (dof, component). */
+        std::vector<std::pair<types::global_dof_index, unsigned int>> top_dofs;
+        std::vector<std::pair<types::global_dof_index, unsigned int>>
+          constrained_top;
+        /** Cell matrices of the linear bricks, by cell shape. */
+        std::map<std::vector<long>, FullMatrix<double>> cell_matrices;
+        std::vector<const FullMatrix<double> *>         matrix_of_cell;
+        double       height = 0, gross_area = 0, length = 0, thickness = 0;
+        unsigned int n_bricks = 0;
+        std::array<unsigned int, 3> n_faces_of_type{{0, 0, 0}},
+          n_joints_of_type{{0, 0, 0}};
+        std::vector<CurvePoint>                     curve;
+        std::vector<std::pair<double, std::string>> pvd, pvd_interfaces;
+        /** DOFs of the two gauge points and their distance. */
+        std::array<std::array<types::global_dof_index, 3>, 2> gauge_dofs;
+        double                                                gauge_span = 0;
+        unsigned int total_newton = 0, total_cutbacks = 0;
+        unsigned int n_solves         = 0;
+        double       seconds_assembly = 0, seconds_solve = 0;
+      };
+
+      void
+      Model::make_mesh()
+      {
+        const auto               h = mesh_spacing(settings);
+        std::vector<Point<3>>    vertices;
+        std::vector<CellData<3>> cells;
+        for (unsigned int b = 0; b < boxes.size(); ++b)
+          {
+            const Box   &box = boxes[b];
+            unsigned int n[3];
+            for (unsigned int d = 0; d < 3; ++d)
+              {
+                n[d] = divisions(box, d, h[d]);
+                Assert(n[d] > 0, ExcInternalError());
+                height    = std::max(height, box.upper[2]);
+                length    = std::max(length, box.upper[0]);
+                thickness = std::max(thickness, box.upper[1]);
+              }
+            const unsigned int first = vertices.size();
+            for (unsigned int k = 0; k <= n[2]; ++k)
+              for (unsigned int j = 0; j <= n[1]; ++j)
+                for (unsigned int i = 0; i <= n[0]; ++i)
+                  vertices.emplace_back(
+                    box.lower[0] + (box.upper[0] - box.lower[0]) * i / n[0],
+                    box.lower[1] + (box.upper[1] - box.lower[1]) * j / n[1],
+                    box.lower[2] + (box.upper[2] - box.lower[2]) * k / n[2]);
+            auto index = [&](unsigned int i, unsigned int j, unsigned int k) {
+              return first + i + (n[0] + 1) * (j + (n[1] + 1) * k);
+            };
+            for (unsigned int k = 0; k < n[2]; ++k)
+              for (unsigned int j = 0; j < n[1]; ++j)
+                for (unsigned int i = 0; i < n[0]; ++i)
+                  {
+                    CellData<3> c;
+                    for (unsigned int v = 0; v < 8; ++v)
+                      c.vertices[v] =
+                        index(i + v % 2, j + (v / 2) % 2, k + v / 4);
+                    c.material_id = b;
+                    cells.push_back(c);
+                  }
+          }
+        n_bricks   = boxes.size();
+        gross_area = length * thickness;
+        if (settings.bonded)
+          {
+            SubCellData               sub;
+            std::vector<unsigned int> considered;
+            GridTools::delete_duplicated_vertices(
+              vertices, cells, sub, considered, 1e-9 * height);
+          }
+        triangulation.create_triangulation(vertices, cells, SubCellData());
+      }
+
+      void
+      Model::find_interfaces()
+      {
+        const auto h = mesh_spacing(settings);
+        // face centres lie on a grid of half the mesh spacing: exact keys
+        std::map<std::array<long, 3>,
+                 std::pair<DoFHandler<3>::active_cell_iterator, unsigned int>>
+                                                        open;
+        std::set<std::pair<unsigned int, unsigned int>> joints[3];
+        auto key = [&](const Point<3> &p) {
+          std::array<long, 3> k;
+          for (unsigned int d = 0; d < 3; ++d)
+            k[d] = std::lround(p[d] / (h[d] / 2));
+          return k;
+        };
+        const double tol = 1e-9 * height;
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary())
+              {
+                const Point<3>     c    = cell->face(f)->center();
+                const unsigned int axis = f / 2;
+                if (axis == 2 &&
+                    (std::abs(c[2]) < tol || std::abs(c[2] - height) < tol))
+                  {
+                    if (std::abs(c[2] - height) < tol)
+                      for (unsigned int v = 0; v < 4; ++v)
+                        for (unsigned int d = 0; d < 3; ++d)
+                          top_dofs.emplace_back(
+                            cell->face(f)->vertex_dof_index(v, d), d);
+                    continue;
+                  }
+                const auto k  = key(c);
+                const auto it = open.find(k);
+                if (it == open.end())
+                  {
+                    open.emplace(k, std::make_pair(cell, f));
+                    continue;
+                  }
+                auto         other = it->second;
+                auto         a = other.first, b = cell;
+                unsigned int fa = other.second, fb = f;
+                if (a->center()[axis] > b->center()[axis])
+                  {
+                    std::swap(a, b);
+                    std::swap(fa, fb);
+                  }
+                open.erase(it);
+                InterfaceFace face;
+                face.axis  = axis;
+                face.type  = axis == 2 ? 0 : axis == 0 ? 1 : 2;
+                face.owned = a->is_locally_owned();
+                face.dofs.resize(24);
+                face.brick_a = a->material_id();
+                face.brick_b = b->material_id();
+                for (unsigned int v = 0; v < 4; ++v)
+                  {
+                    face.vertices[v] = a->face(fa)->vertex(v);
+                    unsigned int w   = 4;
+                    for (unsigned int x = 0; x < 4; ++x)
+                      if (a->face(fa)->vertex(v).distance(
+                            b->face(fb)->vertex(x)) < tol)
+                        w = x;
+                    AssertThrow(w < 4,
+                                ExcMessage("internal error: a joint's faces "
+                                           "do not coincide"));
+                    for (unsigned int d = 0; d < 3; ++d)
+                      {
+                        face.dofs[3 * v + d] =
+                          a->face(fa)->vertex_dof_index(v, d);
+                        face.dofs[12 + 3 * v + d] =
+                          b->face(fb)->vertex_dof_index(w, d);
+                      }
+                  }
+                face.area =
+                  cross_product_3d(face.vertices[1] - face.vertices[0],
+                                   face.vertices[2] - face.vertices[0])
+                    .norm();
+                ++n_faces_of_type[face.type];
+                joints[face.type].insert({face.brick_a, face.brick_b});
+                interfaces.push_back(face);
+              }
+        for (unsigned int t = 0; t < 3; ++t)
+          n_joints_of_type[t] = joints[t].size();
+        // remove duplicates of the top DOFs (shared vertices within a brick)
+        std::sort(top_dofs.begin(), top_dofs.end());
+        top_dofs.erase(std::unique(top_dofs.begin(), top_dofs.end()),
+                       top_dofs.end());
+
+        if (settings.gauss)
+          {
+            q_points = {{0.5 - 0.5 / std::sqrt(3.), 0.5 + 0.5 / std::sqrt(3.)}};
+            q_weights = {{0.5, 0.5}};
+          }
+        else
+          {
+            q_points  = {{0., 1.}};
+            q_weights = {{0.5, 0.5}};
+          }
+        history_old.assign(interfaces.size() * n_quad, InterfaceHistory());
+        history_new = history_old;
+      }
+
+      void
+      Model::setup_system()
+      {
+        dof_handler.distribute_dofs(fe);
+        owned    = dof_handler.locally_owned_dofs();
+        relevant = complete_index_set(dof_handler.n_dofs());
+
+        find_interfaces();
+
+        // Dirichlet conditions of the platens; increments are zero there
+        zero_constraints.clear();
+        zero_constraints.reinit(relevant);
+        const double tol      = 1e-9 * height;
+        const bool   vertical = std::abs(settings.direction[0]) < 1e-12 &&
+                              std::abs(settings.direction[1]) < 1e-12;
+        AssertThrow(settings.lateral_fixed || vertical,
+                    ExcMessage("the platens must be laterally fixed "
+                               "('Platen lateral restraint = fixed') when "
+                               "the platen moves sideways"));
+        std::set<std::pair<types::global_dof_index, unsigned int>> pins;
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary() && f / 2 == 2)
+              {
+                const double z = cell->face(f)->center()[2];
+                if (std::abs(z) > tol && std::abs(z - height) > tol)
+                  continue;
+                for (unsigned int v = 0; v < 4; ++v)
+                  {
+                    const Point<3> p = cell->face(f)->vertex(v);
+                    for (unsigned int d = 0; d < 3; ++d)
+                      {
+                        const auto i   = cell->face(f)->vertex_dof_index(v, d);
+                        bool       fix = settings.lateral_fixed || d == 2;
+                        // free platens: pin the rigid motions in the plane
+                        if (!fix && std::abs(z) < tol && std::abs(p[1]) < tol &&
+                            (std::abs(p[0]) < tol ||
+                             (d == 1 && std::abs(p[0] - length) < tol)))
+                          fix = true;
+                        if (fix && !zero_constraints.is_constrained(i))
+                          zero_constraints.add_line(i);
+                      }
+                  }
+              }
+        zero_constraints.close();
+        for (const auto &td : top_dofs)
+          if (zero_constraints.is_constrained(td.first))
+            constrained_top.push_back(td);
+
+        if (settings.gauge_length > 0)
+          {
+            // the mesh vertices nearest to the ends of the gauge
+            const Point<3> ends[2] = {
+              Point<3>(length / 2, 0, (height - settings.gauge_length) / 2),
+              Point<3>(length / 2, 0, (height + settings.gauge_length) / 2)};
+            double   best[2] = {1e300, 1e300};
+            Point<3> where[2];
+            for (const auto &cell : dof_handler.active_cell_iterators())
+              for (const unsigned int v : cell->vertex_indices())
+                if (std::abs(cell->vertex(v)[1]) < tol)
+                  for (unsigned int e = 0; e < 2; ++e)
+                    if (cell->vertex(v).distance(ends[e]) < best[e] - tol)
+                      {
+                        best[e]  = cell->vertex(v).distance(ends[e]);
+                        where[e] = cell->vertex(v);
+                        for (unsigned int d = 0; d < 3; ++d)
+                          gauge_dofs[e][d] = cell->vertex_dof_index(v, d);
+                      }
+            gauge_span = where[1][2] - where[0][2];
+            AssertThrow(gauge_span > 0,
+                        ExcMessage("the gauge length is shorter than an "
+                                   "element: no two mesh points along it"));
+          }
+
+        DynamicSparsityPattern dsp(relevant);
+        DoFTools::make_sparsity_pattern(dof_handler,
+                                        dsp,
+                                        zero_constraints,
+                                        false,
+                                        Utilities::MPI::this_mpi_process(comm));
+        for (const auto &face : interfaces)
+          if (face.owned)
+            zero_constraints.add_entries_local_to_global(face.dofs, dsp, false);
+        SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);
+        matrix.reinit(owned, owned, dsp, comm);
+
+        u.reinit(owned, comm);
+        f_int.reinit(owned, comm);
+        ghosted.reinit(owned, relevant, comm);
+
+        // the bricks are linear: one matrix per cell shape
+        AssertThrow(material.is_linear(),
+                    ExcMessage("only linear brick materials are supported "
+                               "so far"));
+        const double E      = material.youngs_modulus(),
+                     nu     = material.poissons_ratio();
+        const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu)),
+                     mu     = E / (2 * (1 + nu));
+        QGauss<3>   quadrature(2);
+        FEValues<3> fe_values(fe,
+                              quadrature,
+                              update_gradients | update_JxW_values);
+        matrix_of_cell.assign(triangulation.n_active_cells(), nullptr);
+        const FEValuesExtractors::Vector displacement(0);
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              std::vector<long> shape;
+              for (unsigned int v = 1; v < 8; ++v)
+                for (unsigned int d = 0; d < 3; ++d)
+                  shape.push_back(std::lround(
+                    (cell->vertex(v)[d] - cell->vertex(0)[d]) * 1e12));
+              auto &m = cell_matrices[shape];
+              if (m.m() == 0)
+                {
+                  m.reinit(24, 24);
+                  fe_values.reinit(cell);
+                  for (unsigned int q = 0; q < quadrature.size(); ++q)
+                    for (unsigned int i = 0; i < 24; ++i)
+                      {
+                        const auto eps_i =
+                          fe_values[displacement].symmetric_gradient(i, q);
+                        const double div_i =
+                          fe_values[displacement].divergence(i, q);
+                        for (unsigned int j = 0; j < 24; ++j)
+                          {
+                            const auto eps_j =
+                              fe_values[displacement].symmetric_gradient(j, q);
+                            const double div_j =
+                              fe_values[displacement].divergence(j, q);
+                            m(i, j) += (lambda * div_i * div_j +
+                                        2 * mu * scalar_product(eps_i, eps_j)) *
+                                       fe_values.JxW(q);
+                          }
+                      }
+                }
+              matrix_of_cell[cell->active_cell_index()] = &m;
+            }
+      }
+
+      void
+      Model::assemble(const bool with_matrix)
+      {
+        const auto start = Clock::now();
+        ghosted          = u;
+        f_int            = 0;
+        if (with_matrix)
+          matrix = 0;
+        std::vector<types::global_dof_index> dofs(24);
+        Vector<double>                       ue(24), fe_local(24);
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              cell->get_dof_indices(dofs);
+              for (unsigned int i = 0; i < 24; ++i)
+                ue[i] = ghosted[dofs[i]];
+              const FullMatrix<double> &k =
+                *matrix_of_cell[cell->active_cell_index()];
+              k.vmult(fe_local, ue);
+              f_int.add(dofs, fe_local);
+              if (with_matrix)
+                zero_constraints.distribute_local_to_global(k, dofs, matrix);
+            }
+
+        FullMatrix<double> ki(24, 24);
+        Vector<double>     fi(24);
+        for (unsigned int n = 0; n < interfaces.size(); ++n)
+          {
+            const auto &face = interfaces[n];
+            if (!face.owned)
+              continue;
+            ki = 0;
+            fi = 0;
+            for (unsigned int i = 0; i < 24; ++i)
+              ue[i] = ghosted[face.dofs[i]];
+            const unsigned int a = face.axis;
+            for (unsigned int qy = 0; qy < 2; ++qy)
+              for (unsigned int qx = 0; qx < 2; ++qx)
+                {
+                  const unsigned int q  = qx + 2 * qy;
+                  const double       xi = q_points[qx], eta = q_points[qy];
+                  const double       N[4] = {(1 - xi) * (1 - eta),
+                                             xi * (1 - eta),
+                                             (1 - xi) * eta,
+                                             xi * eta};
+                  const double dA = face.area * q_weights[qx] * q_weights[qy];
+                  Local3       jump{{0, 0, 0}};
+                  for (unsigned int v = 0; v < 4; ++v)
+                    for (unsigned int k = 0; k < 3; ++k)
+                      {
+                        const unsigned int d = (a + k) % 3;
+                        jump[k] += N[v] * (ue[12 + 3 * v + d] - ue[3 * v + d]);
+                      }
+                  Local3  t;
+                  Local33 D;
+                  law.evaluate(jump,
+                               history_old[n * n_quad + q],
+                               history_new[n * n_quad + q],
+                               t,
+                               D);
+                  for (unsigned int v = 0; v < 8; ++v)
+                    {
+                      const double sv = (v < 4 ? -1. : 1.) * N[v % 4];
+                      for (unsigned int k = 0; k < 3; ++k)
+                        {
+                          const unsigned int row = 3 * v + (a + k) % 3;
+                          fi[row] += sv * t[k] * dA;
+                          if (with_matrix)
+                            for (unsigned int w = 0; w < 8; ++w)
+                              {
+                                const double sw = (w < 4 ? -1. : 1.) * N[w % 4];
+                                for (unsigned int l = 0; l < 3; ++l)
+                                  ki(row, 3 * w + (a + l) % 3) +=
+                                    sv * sw * D[k][l] * dA;
+                              }
+                        }
+                    }
+                }
+            f_int.add(face.dofs, fi);
+            if (with_matrix)
+              zero_constraints.distribute_local_to_global(ki,
+                                                          face.dofs,
+                                                          matrix);
+          }
+        f_int.compress(VectorOperation::add);
+        if (with_matrix)
+          matrix.compress(VectorOperation::add);
+        seconds_assembly +=
+          std::chrono::duration<double>(Clock::now() - start).count();
+      }
+
+      void
+      Model::solve_linear(TrilinosWrappers::MPI::Vector       &du,
+                          const TrilinosWrappers::MPI::Vector &rhs)
+      {
+        const auto start = Clock::now();
+        ++n_solves;
+        const std::string &s = settings.linear_solver;
+        if (s == "direct" || s == "direct klu")
+          {
+            SolverControl                                  control(1, 0);
+            TrilinosWrappers::SolverDirect::AdditionalData data(
+              false, s == "direct" ? "Amesos_Mumps" : "Amesos_Klu");
+            TrilinosWrappers::SolverDirect solver(control, data);
+            solver.solve(matrix, du, rhs);
+          }
+        else
+          {
+            TrilinosWrappers::PreconditionAMG                 amg;
+            TrilinosWrappers::PreconditionAMG::AdditionalData data;
+            std::vector<std::vector<bool>>                    modes;
+            DoFTools::extract_constant_modes(dof_handler,
+                                             ComponentMask(3, true),
+                                             modes);
+            data.constant_modes        = modes;
+            data.elliptic              = true;
+            data.higher_order_elements = false;
+            data.smoother_sweeps       = 2;
+            data.aggregation_threshold = 0.02;
+            amg.initialize(matrix, data);
+            SolverControl control(5000,
+                                  settings.linear_tolerance * rhs.l2_norm());
+            if (s == "cg amg")
+              {
+                TrilinosWrappers::SolverCG solver(control);
+                solver.solve(matrix, du, rhs, amg);
+              }
+            else
+              {
+                TrilinosWrappers::SolverGMRES solver(control);
+                solver.solve(matrix, du, rhs, amg);
+              }
+          }
+        seconds_solve +=
+          std::chrono::duration<double>(Clock::now() - start).count();
+      }
+
+      void
+      Model::set_platen(TrilinosWrappers::MPI::Vector &v, const double disp)
+      {
+        for (const auto &td : constrained_top)
+          if (owned.is_element(td.first))
+            v[td.first] = disp * settings.direction[td.second];
+        v.compress(VectorOperation::insert);
+      }
+
+      double
+      Model::reaction() const
+      {
+        double r = 0;
+        for (const auto &td : top_dofs)
+          if (owned.is_element(td.first))
+            r += f_int[td.first] * settings.direction[td.second];
+        return Utilities::MPI::sum(r, comm);
+      }
+
+      double
+      Model::max_damage() const
+      {
+        double d = 0;
+        for (const auto &h : history_old)
+          d = std::max(d, h.damage);
+        return Utilities::MPI::max(d, comm);
+      }
+
+      bool
+      Model::solve_step(const double displacement, unsigned int &iterations)
+      {
+        set_platen(u, displacement);
+        TrilinosWrappers::MPI::Vector r(owned, comm), du(owned, comm),
+          u_start(owned, comm);
+        double norm0 = 0;
+        for (iterations = 0; iterations <= settings.max_newton; ++iterations)
+          {
+            assemble(true);
+            r = f_int;
+            r *= -1;
+            zero_constraints.set_zero(r);
+            const double norm = r.l2_norm();
+            const double all  = f_int.l2_norm();
+            if (!std::isfinite(norm) || !std::isfinite(all))
+              return false;
+            // scale: the platen reactions, or the elastic force of the
+            // whole applied displacement when nothing is loaded
+            const double scale =
+              std::max(std::sqrt(std::max(all * all - norm * norm, 0.)),
+                       1e-6 * material.youngs_modulus() * gross_area *
+                         std::abs(settings.target_displacement) / height);
+            if (norm <= settings.newton_tolerance * scale)
+              return true;
+            if (iterations == settings.max_newton)
+              return false;
+            norm0 = norm;
+            du    = 0;
+            try
+              {
+                solve_linear(du, r);
+              }
+            catch (const std::exception &)
+              {
+                return false;
+              }
+            zero_constraints.set_zero(du);
+            u_start = u;
+            u.add(1., du);
+            if (settings.line_search)
+              {
+                // backtracking on the residual norm
+                double alpha = 1, best_alpha = 1, best = 0;
+                for (unsigned int k = 0; k < 6; ++k)
+                  {
+                    assemble(false);
+                    r = f_int;
+                    zero_constraints.set_zero(r);
+                    const double n = r.l2_norm();
+                    if (k == 0 || (std::isfinite(n) && n < best))
+                      {
+                        best       = n;
+                        best_alpha = alpha;
+                      }
+                    if (std::isfinite(n) && n < (1 - 1e-4 * alpha) * norm0)
+                      break;
+                    alpha /= 2;
+                    u = u_start;
+                    u.add(alpha, du);
+                  }
+                if (alpha != best_alpha)
+                  {
+                    u = u_start;
+                    u.add(best_alpha, du);
+                  }
+              }
+          }
+        return false;
+      }
+
+      void
+      Model::write_vtu(const unsigned int step, const double time)
+      {
+        if (!settings.write_vtu)
+          return;
+        ghosted = u;
+        DataOut<3> data_out;
+        data_out.attach_dof_handler(dof_handler);
+        std::vector<std::string> names(3, "displacement");
+        std::vector<DataComponentInterpretation::DataComponentInterpretation>
+          interpretation(
+            3, DataComponentInterpretation::component_is_part_of_vector);
+        data_out.add_data_vector(ghosted,
+                                 names,
+                                 DataOut<3>::type_dof_data,
+                                 interpretation);
+        // stress at the cell centres (Pa)
+        const double E                     = material.youngs_modulus(),
+                     nu                    = material.poissons_ratio();
+        const double lambda                = E * nu / ((1 + nu) * (1 - 2 * nu)),
+                     mu                    = E / (2 * (1 + nu));
+        const unsigned int         n_cells = triangulation.n_active_cells();
+        std::vector<Vector<float>> stress(6, Vector<float>(n_cells));
+        Vector<float>              subdomain(n_cells);
+        QMidpoint<3>               midpoint;
+        FEValues<3>                fe_values(fe, midpoint, update_gradients);
+        std::vector<Tensor<2, 3>>  grad(1);
+        const FEValuesExtractors::Vector displacement(0);
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              fe_values.reinit(cell);
+              fe_values[displacement].get_function_gradients(ghosted, grad);
+              const Tensor<2, 3> eps = 0.5 * (grad[0] + transpose(grad[0]));
+              const double       tr  = trace(eps);
+              const unsigned int c   = cell->active_cell_index();
+              const unsigned int ij[6][2] = {
+                {0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {0, 2}};
+              for (unsigned int k = 0; k < 6; ++k)
+                stress[k][c] =
+                  2 * mu * eps[ij[k][0]][ij[k][1]] + (k < 3 ? lambda * tr : 0.);
+              subdomain[c] = cell->subdomain_id();
+            }
+        const char *stress_names[6] = {"stress_xx",
+                                       "stress_yy",
+                                       "stress_zz",
+                                       "stress_xy",
+                                       "stress_yz",
+                                       "stress_xz"};
+        for (unsigned int k = 0; k < 6; ++k)
+          data_out.add_data_vector(stress[k], stress_names[k]);
+        data_out.add_data_vector(subdomain, "subdomain");
+        data_out.build_patches();
+        const std::string dir = context.output.path();
+        const std::string pvtu =
+          data_out.write_vtu_with_pvtu_record(dir, "solution", step, comm, 4);
+        pvd.emplace_back(time, pvtu);
+
+        // interfaces: one quadrilateral per face pair, cell data averaged
+        // over the integration points
+        const unsigned int  n = interfaces.size();
+        std::vector<double> damage(n, 0), opening(n, 0), slip(n, 0);
+        for (unsigned int i = 0; i < n; ++i)
+          if (interfaces[i].owned)
+            {
+              const auto        &face = interfaces[i];
+              const unsigned int a    = face.axis;
+              for (unsigned int q = 0; q < n_quad; ++q)
+                damage[i] += history_old[i * n_quad + q].damage / n_quad;
+              // opening at the centre of the face
+              Tensor<1, 3> jump;
+              for (unsigned int v = 0; v < 4; ++v)
+                for (unsigned int d = 0; d < 3; ++d)
+                  jump[d] += 0.25 * (ghosted[face.dofs[12 + 3 * v + d]] -
+                                     ghosted[face.dofs[3 * v + d]]);
+              opening[i] = jump[a];
+              slip[i]    = std::hypot(jump[(a + 1) % 3], jump[(a + 2) % 3]);
+            }
+        MPI_Allreduce(
+          MPI_IN_PLACE, damage.data(), n, MPI_DOUBLE, MPI_SUM, comm);
+        MPI_Allreduce(
+          MPI_IN_PLACE, opening.data(), n, MPI_DOUBLE, MPI_SUM, comm);
+        MPI_Allreduce(MPI_IN_PLACE, slip.data(), n, MPI_DOUBLE, MPI_SUM, comm);
+        std::ostringstream name;
+        name << "interfaces_" << std::setw(4) << std::setfill('0') << step
+             << ".vtu";
+        const std::string file = context.output.file(name.str());
+        pvd_interfaces.emplace_back(time, name.str());
+        if (Utilities::MPI::this_mpi_process(comm) == 0)
+          {
+            std::ofstream out(file);
+            out << std::setprecision(10);
+            out
+              << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" "
+                 "version=\"0.1\" byte_order=\"LittleEndian\">\n"
+                 "<UnstructuredGrid>\n<Piece NumberOfPoints=\""
+              << 4 * n << "\" NumberOfCells=\"" << n << "\">\n"
+              << "<Points>\n<DataArray type=\"Float64\" "
+                 "NumberOfComponents=\"3\" format=\"ascii\">\n";
+            const unsigned int order[4] = {0, 1, 3, 2};
+            for (const auto &face : interfaces)
+              for (unsigned int v = 0; v < 4; ++v)
+                out << face.vertices[order[v]] << "\n";
+            out << "</DataArray>\n</Points>\n<Cells>\n<DataArray "
+                   "type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+            for (unsigned int i = 0; i < 4 * n; ++i)
+              out << i << (i % 4 == 3 ? "\n" : " ");
+            out << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" "
+                   "format=\"ascii\">\n";
+            for (unsigned int i = 0; i < n; ++i)
+              out << 4 * (i + 1) << "\n";
+            out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" "
+                   "format=\"ascii\">\n";
+            for (unsigned int i = 0; i < n; ++i)
+              out << "9\n";
+            out << "</DataArray>\n</Cells>\n<CellData>\n";
+            auto array = [&](const char                *title,
+                             const std::vector<double> &values) {
+              out << "<DataArray type=\"Float64\" Name=\"" << title
+                  << "\" format=\"ascii\">\n";
+              for (const double x : values)
+                out << x << "\n";
+              out << "</DataArray>\n";
+            };
+            array("damage", damage);
+            array("normal_opening", opening);
+            array("slip", slip);
+            std::vector<double> type(n);
+            for (unsigned int i = 0; i < n; ++i)
+              type[i] = interfaces[i].type;
+            array("joint_type_bed0_head1_collar2", type);
+            out << "</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+          }
+        // record the files written by DataOut
+        context.output.file(pvtu);
+        const std::string stem =
+          "solution_" + Utilities::int_to_string(step, 4);
+        for (unsigned int r = 0; r < Utilities::MPI::n_mpi_processes(comm); ++r)
+          context.output.file(stem + "." +
+                              Utilities::int_to_string(
+                                r,
+                                Utilities::needed_digits(
+                                  Utilities::MPI::n_mpi_processes(comm) - 1)) +
+                              ".vtu");
+        if (Utilities::MPI::this_mpi_process(comm) == 0)
+          {
+            std::ofstream pvd_out(context.output.file("solution.pvd"));
+            DataOutBase::write_pvd_record(pvd_out, pvd);
+            std::ofstream pvd_i(context.output.file("interfaces.pvd"));
+            DataOutBase::write_pvd_record(pvd_i, pvd_interfaces);
+          }
+      }
+
+      void
+      Model::write_curve(Json &summary)
+      {
+        const std::string csv = context.output.file("curve.csv");
+        if (Utilities::MPI::this_mpi_process(comm) == 0)
+          {
+            std::ofstream out(csv);
+            out << std::setprecision(12);
+            out << "step,displacement_m,strain,force_N,stress_Pa,"
+                   "newton_iterations,max_damage,gauge_strain\n";
+            for (unsigned int i = 0; i < curve.size(); ++i)
+              out << i << "," << curve[i].displacement << "," << curve[i].strain
+                  << "," << curve[i].force << "," << curve[i].stress << ","
+                  << curve[i].newton << "," << curve[i].max_damage << ","
+                  << curve[i].gauge_strain << "\n";
+          }
+        if (settings.write_plot)
+          {
+            const std::string png = context.output.file("curve.png");
+            if (Utilities::MPI::this_mpi_process(comm) == 0)
+              {
+                const std::string script =
+                  context.output.path() + ".curve_plot.py";
+                std::ofstream py(script);
+                py << "import matplotlib\nmatplotlib.use('Agg')\n"
+                      "import matplotlib.pyplot as plt\nimport csv\n"
+                      "rows = list(csv.DictReader(open('"
+                   << csv
+                   << "')))\n"
+                      "e = [1e3*float(r['strain']) for r in rows]\n"
+                      "s = [1e-6*float(r['stress_Pa']) for r in rows]\n"
+                      "plt.figure(figsize=(6,4.5))\n"
+                      "plt.plot(e, s, 'o-', ms=3)\n"
+                      "plt.xlabel('strain along the platen motion (1e-3)')\n"
+                      "plt.ylabel('stress = force / gross area (MPa)')\n"
+                      "plt.grid(alpha=0.3)\nplt.tight_layout()\n"
+                      "plt.savefig('"
+                   << png << "', dpi=120)\n";
+                py.close();
+                const int rc = std::system(
+                  ("/usr/bin/python3 " + script + " >/dev/null 2>&1").c_str());
+                std::filesystem::remove(script);
+                if (rc != 0)
+                  pcout << "Warning: the plot curve.png could not be drawn "
+                           "(needs /usr/bin/python3 with matplotlib)\n";
+              }
+          }
+        double peak = -1e300, strain_at_peak = 0;
+        for (const auto &p : curve)
+          if (p.stress > peak)
+            {
+              peak           = p.stress;
+              strain_at_peak = p.strain;
+            }
+        double work = 0;
+        for (unsigned int i = 1; i < curve.size(); ++i)
+          work += 0.5 * (curve[i].force + curve[i - 1].force) *
+                  (curve[i].displacement - curve[i - 1].displacement);
+        summary["peak_stress"]    = curve.size() > 1 ? peak : 0.;
+        summary["strain_at_peak"] = strain_at_peak;
+        summary["initial_modulus"] =
+          curve.size() > 1 ? curve[1].stress / curve[1].strain : 0.;
+        if (gauge_span > 0)
+          {
+            summary["gauge_length"] = gauge_span;
+            for (const auto &p : curve)
+              if (p.stress == peak)
+                summary["gauge_strain_at_peak"] = p.gauge_strain;
+            summary["initial_modulus_gauge"] =
+              curve.size() > 1 ? curve[1].stress / curve[1].gauge_strain : 0.;
+          }
+        summary["final_stress"]  = curve.back().stress;
+        summary["final_strain"]  = curve.back().strain;
+        summary["external_work"] = work;
+        summary["max_damage"]    = curve.back().max_damage;
+      }
+
+
+      void
+      Model::write_calculix()
+      {
+        // the nodes used by the cells, numbered from 1 in vertex order
+        ghosted                       = u;
+        const auto               &all = triangulation.get_vertices();
+        std::vector<unsigned int> node(all.size(), 0);
+        std::vector<std::array<types::global_dof_index, 3>> dofs(all.size());
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          for (const unsigned int v : cell->vertex_indices())
+            {
+              node[cell->vertex_index(v)] = 1;
+              for (unsigned int d = 0; d < 3; ++d)
+                dofs[cell->vertex_index(v)][d] = cell->vertex_dof_index(v, d);
+            }
+        unsigned int n = 0;
+        for (auto &i : node)
+          if (i)
+            i = ++n;
+        const std::string inp = context.output.file("calculix.inp");
+        const std::string csv = context.output.file("nodal_displacements.csv");
+        if (Utilities::MPI::this_mpi_process(comm) != 0)
+          return;
+        const double  tol = 1e-9 * height;
+        std::ofstream out(inp);
+        // CalculiX reads fields of at most 20 characters
+        out << std::setprecision(15);
+        out << "** masonry wallette: " << triangulation.n_active_cells()
+            << " C3D8 elements, bottom fixed, top moved by "
+            << settings.target_displacement << " m along ("
+            << settings.direction[0] << ", " << settings.direction[1] << ", "
+            << settings.direction[2] << ")\n*NODE, NSET=NALL\n";
+        for (unsigned int v = 0; v < all.size(); ++v)
+          if (node[v])
+            out << node[v] << ", " << all[v][0] << ", " << all[v][1] << ", "
+                << all[v][2] << "\n";
+        out << "*ELEMENT, TYPE=C3D8, ELSET=EALL\n";
+        const unsigned int order[8] = {0, 1, 3, 2, 4, 5, 7, 6};
+        unsigned int       e        = 0;
+        for (const auto &cell : triangulation.active_cell_iterators())
+          {
+            out << ++e;
+            for (const unsigned int v : order)
+              out << ", " << node[cell->vertex_index(v)];
+            out << "\n";
+          }
+        for (const bool top : {false, true})
+          {
+            out << "*NSET, NSET=" << (top ? "TOP" : "BOTTOM") << "\n";
+            unsigned int k = 0;
+            for (unsigned int v = 0; v < all.size(); ++v)
+              if (node[v] && std::abs(all[v][2] - (top ? height : 0.)) < tol)
+                out << node[v] << (++k % 8 == 0 ? ",\n" : ", ");
+            out << "\n";
+          }
+        out << "*MATERIAL, NAME=BRICK\n*ELASTIC\n"
+            << material.youngs_modulus() << ", " << material.poissons_ratio()
+            << "\n*SOLID SECTION, ELSET=EALL, MATERIAL=BRICK\n"
+            << "*STEP\n*STATIC\n*BOUNDARY\n";
+        for (unsigned int d = 0; d < 3; ++d)
+          if (settings.lateral_fixed || d == 2)
+            out << "BOTTOM, " << d + 1 << ", " << d + 1 << "\n";
+        for (unsigned int d = 0; d < 3; ++d)
+          if (settings.lateral_fixed || d == 2)
+            out << "TOP, " << d + 1 << ", " << d + 1 << ", " << std::scientific
+                << std::setprecision(12)
+                << settings.target_displacement * settings.direction[d]
+                << std::defaultfloat << std::setprecision(15) << "\n";
+        out << "*NODE PRINT, NSET=NALL\nU\n*NODE PRINT, NSET=TOP, "
+               "TOTALS=ONLY\nRF\n*END STEP\n";
+        std::ofstream d(csv);
+        d << std::setprecision(17) << "node,x,y,z,u_x,u_y,u_z\n";
+        for (unsigned int v = 0; v < all.size(); ++v)
+          if (node[v])
+            d << node[v] << "," << all[v][0] << "," << all[v][1] << ","
+              << all[v][2] << "," << ghosted[dofs[v][0]] << ","
+              << ghosted[dofs[v][1]] << "," << ghosted[dofs[v][2]] << "\n";
+      }
+
+      void
+      Model::run()
+      {
+        const auto start = Clock::now();
+        make_mesh();
+        setup_system();
+        Json &summary         = context.summary;
+        summary["n_bricks"]   = n_bricks;
+        summary["n_cells"]    = triangulation.n_active_cells();
+        summary["n_dofs"]     = dof_handler.n_dofs();
+        summary["height"]     = height;
+        summary["length"]     = length;
+        summary["thickness"]  = thickness;
+        summary["gross_area"] = gross_area;
+        for (unsigned int t = 0; t < 3; ++t)
+          {
+            summary[std::string("n_") + type_name[t] + "_joints"] =
+              n_joints_of_type[t];
+            summary[std::string("n_") + type_name[t] + "_interface_faces"] =
+              n_faces_of_type[t];
+          }
+        pcout << "Wallette: " << length << " x " << thickness << " x " << height
+              << " m, " << n_bricks << " enlarged bricks, "
+              << triangulation.n_active_cells() << " cells, "
+              << dof_handler.n_dofs() << " DOFs\n"
+              << "Joints (brick pairs / face pairs): bed "
+              << n_joints_of_type[0] << " / " << n_faces_of_type[0] << ", head "
+              << n_joints_of_type[1] << " / " << n_faces_of_type[1]
+              << ", collar " << n_joints_of_type[2] << " / "
+              << n_faces_of_type[2] << "\n";
+
+        curve.push_back({0, 0, 0, 0, 0, 0, 0});
+        write_vtu(0, 0);
+        const double target  = settings.target_displacement;
+        const double nominal = target / settings.n_steps;
+        double       applied = 0, increment = nominal;
+        unsigned int consecutive_cutbacks = 0, step = 0, easy_steps = 0;
+        std::string  status = "completed", message;
+        TrilinosWrappers::MPI::Vector u_converged(u);
+        while (std::abs(applied) < std::abs(target) * (1 - 1e-12))
+          {
+            double next = applied + increment;
+            if (std::abs(next) > std::abs(target) * (1 - 1e-9))
+              next = target;
+            unsigned int its = 0;
+            const bool   ok  = solve_step(next, its);
+            total_newton += its;
+            if (!ok)
+              {
+                u           = u_converged;
+                history_new = history_old;
+                ++total_cutbacks;
+                ++consecutive_cutbacks;
+                if (consecutive_cutbacks > settings.max_cutbacks)
+                  {
+                    std::ostringstream m;
+                    m << "no convergence at platen displacement " << next
+                      << " m after " << settings.max_cutbacks
+                      << " halvings of the step (last converged: " << applied
+                      << " m); results up to there are written";
+                    status  = "not converged";
+                    message = m.str();
+                    pcout << "Stopped: " << message << "\n";
+                    break;
+                  }
+                increment /= 2;
+                easy_steps = 0;
+                if (settings.progress)
+                  pcout << "  cut-back: step halved to " << increment << " m\n";
+                continue;
+              }
+            consecutive_cutbacks = 0;
+            history_old          = history_new;
+            u_converged          = u;
+            applied              = next;
+            ++step;
+            const double force = reaction();
+            CurvePoint   p;
+            p.displacement = applied;
+            p.strain       = applied / height;
+            p.force        = force;
+            p.stress       = force / gross_area;
+            p.newton       = its;
+            p.max_damage   = max_damage();
+            p.gauge_strain = 0;
+            if (gauge_span > 0)
+              {
+                ghosted = u;
+                for (unsigned int d = 0; d < 3; ++d)
+                  p.gauge_strain +=
+                    (ghosted[gauge_dofs[1][d]] - ghosted[gauge_dofs[0][d]]) *
+                    settings.direction[d] / gauge_span;
+              }
+            curve.push_back(p);
+            if (settings.progress)
+              pcout << "Step " << step << ": strain " << std::setprecision(4)
+                    << p.strain << ", stress " << p.stress * 1e-6
+                    << " MPa, max damage " << p.max_damage << ", " << its
+                    << " Newton iterations" << std::setprecision(6) << "\n";
+            const bool last =
+              std::abs(applied) >= std::abs(target) * (1 - 1e-12);
+            if (settings.vtu_interval > 0 && step % settings.vtu_interval == 0)
+              write_vtu(step, p.strain);
+            else if (last)
+              write_vtu(step, p.strain);
+            // grow after two consecutive easy steps
+            easy_steps =
+              its <= std::max(2u, settings.max_newton / 3) ? easy_steps + 1 : 0;
+            if (easy_steps >= 2)
+              {
+                increment =
+                  std::abs(increment * settings.growth) > std::abs(nominal) ?
+                    nominal :
+                    increment * settings.growth;
+                easy_steps = 0;
+              }
+          }
+        if (status != "completed" && settings.write_vtu)
+          {
+            u = u_converged;
+            write_vtu(step, curve.back().strain);
+          }
+        write_curve(summary);
+        if (settings.write_calculix)
+          write_calculix();
+        const double seconds =
+          std::chrono::duration<double>(Clock::now() - start).count();
+        summary["status"] = status;
+        if (!message.empty())
+          summary["message"] = message;
+        summary["steps"]             = step;
+        summary["newton_iterations"] = total_newton;
+        summary["cut_backs"]         = total_cutbacks;
+        summary["linear_solves"]     = n_solves;
+        summary["seconds"]           = seconds;
+        summary["seconds_assembly"]  = seconds_assembly;
+        summary["seconds_solve"]     = seconds_solve;
+        pcout << "Result: peak stress " << std::setprecision(6)
+              << summary["peak_stress"].as_number() * 1e-6 << " MPa at strain "
+              << summary["strain_at_peak"].as_number() << ", initial modulus "
+              << summary["initial_modulus"].as_number() * 1e-9 << " GPa; "
+              << step << " steps, " << total_newton << " Newton iterations, "
+              << total_cutbacks << " cut-backs\n";
+      }
+    } // namespace
+
+    void
+    run_wallette(const std::vector<Box> &boxes,
+                 const BrickMaterial    &material,
+                 const InterfaceLaw     &law,
+                 const WalletteSettings &settings,
+                 RunContext             &context)
+    {
+      check_mesh(boxes, settings);
+      Model model(boxes, material, law, settings, context);
+      model.run();
+    }
+  } // namespace brickwork
+} // namespace masonry
