@@ -13,6 +13,9 @@
  * weight W₂ = ρ g w t (1 m) of the free block and λ P θ (1 m) for the load:
  *   λ = (f_eff w t² / 2 − W₂ / 2) / P.
  * Sliding of the free block needs λ = (c w t − W₂)/P, larger here.
+ *
+ * The same load as a line load q = P / w along the free edge (N/m) gives
+ * the same λ (its resultant acts at the same lever arm).
  */
 #include <deal.II/base/mpi.h>
 
@@ -23,7 +26,11 @@ using namespace vault_tests;
 namespace
 {
   std::string
-  cantilever_prm(const double f_t, const double c, const double tan_phi)
+  cantilever_prm(const double       f_t,
+                 const double       c,
+                 const double       tan_phi,
+                 const std::string &load = "set Point loads = 0, 1, 0.5, 0, 0, "
+                                           "-1000")
   {
     std::ostringstream s;
     s.precision(17);
@@ -40,7 +47,7 @@ namespace
       << "  set Blocks along v = 1\n  set Supported edges = left\n"
       << "  set Support contact = bonded\n"
       << "  set Live acceleration = 0; 0; 0\n"
-      << "  set Point loads = 0, 1, 0.5, 0, 0, -1000\n"
+      << "  " << load << "\n"
       << "  set Write picture = false\nend\n";
     return s.str();
   }
@@ -69,4 +76,11 @@ main(int argc, char **argv)
                 << " (statics)\n";
       check(relative(got, lambda) < 1e-8, k.what + ": λ to 1e-8");
     }
+  const double        lambda = (1e5 * w * t * t / 2 - W2 / 2) / P;
+  const masonry::Json line =
+    run("line_load",
+        cantilever_prm(
+          1e5, 1e6, 0.5, "set Line loads = 0, 1, 0, 1, 1, 0, 0, -2000"));
+  check(relative(line.at("load_multiplier").as_number(), lambda) < 1e-8,
+        "line load 2 kN/m along the free edge: the same λ to 1e-8");
 }

@@ -13,6 +13,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <chrono>
+#include <cmath>
 #include <iomanip>
 #include <limits>
 
@@ -41,7 +42,7 @@ namespace masonry
           "(dimensionless), as `ax; ay; az': the live load on a block of "
           "weight W is λ W (ax, ay, az). `1; 0; 0' is the seismic case "
           "(horizontal acceleration λ g along x); `0; 0; -1' a multiplier "
-          "on self weight; `0; 0; 0' for point loads only.");
+          "on self weight; `0; 0; 0' for point or line loads only.");
         prm.declare_entry(
           "Point loads",
           "",
@@ -51,6 +52,17 @@ namespace masonry
           "point of the middle surface at parameters (u, v) ∈ [0, 1]² of "
           "the patch with that index (0-based, in the geometry model's "
           "order); e.g. `0, 1, 0.5, 0, 0, -1000'.");
+        prm.declare_entry(
+          "Line loads",
+          "",
+          dealii::Patterns::Anything(),
+          "Live line loads, `;'-separated, each `patch, u0, v0, u1, v1, qx, "
+          "qy, qz': a force (qx, qy, qz) in N/m per unit multiplier, per "
+          "unit length of the curve of the middle surface that is the image "
+          "of the straight parameter segment (u0, v0)–(u1, v1) of the patch "
+          "(integrated with 256 midpoint pieces, each given to the block "
+          "that contains it); e.g. `0, 1, 0, 1, 1, 0, 0, -2000' along the "
+          "edge u = 1.");
       }
 
       void
@@ -62,39 +74,54 @@ namespace masonry
                                                ';');
         for (unsigned int d = 0; d < 3; ++d)
           acceleration[d] = dealii::Utilities::string_to_double(a[d]);
+        // `;'-separated lists of n numbers each
+        auto numbers = [&](const std::string &entry,
+                           const unsigned int n,
+                           const std::string &format) {
+          std::vector<std::vector<double>> list;
+          for (const auto &item :
+               dealii::Utilities::split_string_list(prm.get(entry), ';'))
+            {
+              if (item.empty())
+                continue;
+              const auto v = dealii::Utilities::split_string_list(item, ',');
+              AssertThrow(
+                v.size() == n,
+                ExcParameter(entry, "'" + item + "' is not `" + format + "'"));
+              std::vector<double> x;
+              try
+                {
+                  for (const auto &t : v)
+                    x.push_back(dealii::Utilities::string_to_double(t));
+                }
+              catch (...)
+                {
+                  AssertThrow(false,
+                              ExcParameter(entry,
+                                           "'" + item + "' has a bad number"));
+                }
+              AssertThrow(x[0] >= 0 && x[0] == std::floor(x[0]),
+                          ExcParameter(entry,
+                                       "'" + item +
+                                         "': the patch index must be a "
+                                         "non-negative integer"));
+              for (unsigned int k = 1; k <= (n == 6 ? 2u : 4u); ++k)
+                AssertThrow(x[k] >= 0 && x[k] <= 1,
+                            ExcParameter(entry,
+                                         "'" + item +
+                                           "': u and v must lie in [0, 1]"));
+              list.push_back(x);
+            }
+          return list;
+        };
         point_loads.clear();
-        for (const auto &load :
-             dealii::Utilities::split_string_list(prm.get("Point loads"), ';'))
-          {
-            if (load.empty())
-              continue;
-            const auto v = dealii::Utilities::split_string_list(load, ',');
-            AssertThrow(v.size() == 6,
-                        ExcParameter("Point loads",
-                                     "'" + load +
-                                       "' is not `patch, u, v, Fx, Fy, Fz'"));
-            PointLoad p;
-            try
-              {
-                p.patch = dealii::Utilities::string_to_int(v[0]);
-                p.uv =
-                  dealii::Point<2>(dealii::Utilities::string_to_double(v[1]),
-                                   dealii::Utilities::string_to_double(v[2]));
-                for (unsigned int d = 0; d < 3; ++d)
-                  p.force[d] = dealii::Utilities::string_to_double(v[3 + d]);
-              }
-            catch (...)
-              {
-                AssertThrow(false,
-                            ExcParameter("Point loads",
-                                         "'" + load + "' has a bad number"));
-              }
-            AssertThrow(
-              p.uv[0] >= 0 && p.uv[0] <= 1 && p.uv[1] >= 0 && p.uv[1] <= 1,
-              ExcParameter("Point loads",
-                           "'" + load + "': u and v must lie in [0, 1]"));
-            point_loads.push_back(p);
-          }
+        for (const auto &x :
+             numbers("Point loads", 6, "patch, u, v, Fx, Fy, Fz"))
+          point_loads.push_back({static_cast<unsigned int>(x[0]),
+                                 dealii::Point<2>(x[1], x[2]),
+                                 dealii::Tensor<1, 3>({x[3], x[4], x[5]})});
+        line_loads =
+          numbers("Line loads", 8, "patch, u0, v0, u1, v1, qx, qy, qz");
       }
 
       void
@@ -102,6 +129,32 @@ namespace masonry
       {
         RigidBlockAnalysis::setup(prm);
         plugins::ParsePathScope scope(section);
+        for (const auto &x : line_loads)
+          AssertThrow(x[0] < geometry->patches().size(),
+                      ExcParameter("Line loads",
+                                   "patch " + std::to_string(int(x[0])) +
+                                     " does not exist"));
+        // a line load becomes point loads at the midpoints of 256 pieces
+        all_point_loads = point_loads;
+        for (const auto &x : line_loads)
+          {
+            const auto        &patch = geometry->patches()[int(x[0])];
+            const unsigned int n     = 256;
+            for (unsigned int k = 0; k < n; ++k)
+              {
+                auto at = [&](const double s) {
+                  return dealii::Point<2>(x[1] + s * (x[3] - x[1]),
+                                          x[2] + s * (x[4] - x[2]));
+                };
+                const double length =
+                  patch.point(at(double(k + 1) / n))
+                    .distance(patch.point(at(double(k) / n)));
+                all_point_loads.push_back(
+                  {static_cast<unsigned int>(x[0]),
+                   at((k + 0.5) / n),
+                   length * dealii::Tensor<1, 3>({x[5], x[6], x[7]})});
+              }
+          }
         for (const auto &p : point_loads)
           AssertThrow(
             p.patch < geometry->patches().size(),
@@ -109,10 +162,11 @@ namespace masonry
                          "patch " + std::to_string(p.patch) +
                            " does not exist (the geometry has " +
                            std::to_string(geometry->patches().size()) + ")"));
-        AssertThrow(acceleration.norm() > 0 || !point_loads.empty(),
+        AssertThrow(acceleration.norm() > 0 || !all_point_loads.empty(),
                     ExcParameter("Live acceleration",
                                  "there is no live load: set a non-zero "
-                                 "acceleration or some Point loads"));
+                                 "acceleration, Point loads or Line "
+                                 "loads"));
       }
 
       std::string
@@ -197,7 +251,7 @@ namespace masonry
           live_moment(blocks.size());
         for (unsigned int b = 0; b < blocks.size(); ++b)
           live_force[b] = blocks[b].weight * acceleration;
-        for (const auto &p : point_loads)
+        for (const auto &p : all_point_loads)
           {
             const unsigned int     b = locate_block(p.patch, p.uv);
             const dealii::Point<3> x = geometry->patches()[p.patch].point(p.uv);
@@ -249,8 +303,9 @@ namespace masonry
         dealii::Tensor<1, 3> force;
       };
 
-      dealii::Tensor<1, 3>   acceleration;
-      std::vector<PointLoad> point_loads;
+      dealii::Tensor<1, 3>             acceleration;
+      std::vector<PointLoad>           point_loads, all_point_loads;
+      std::vector<std::vector<double>> line_loads;
     };
   } // namespace analysis
 } // namespace masonry
