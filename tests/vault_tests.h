@@ -28,10 +28,14 @@ namespace vault_tests
       const std::string &prm_text,
       const MPI_Comm     comm = MPI_COMM_WORLD)
   {
-    {
-      std::ofstream prm(name + ".prm");
-      prm << "set Output directory = results/" << name << "\n" << prm_text;
-    }
+    int rank = 0;
+    MPI_Comm_rank(comm, &rank);
+    if (rank == 0)
+      {
+        std::ofstream prm(name + ".prm");
+        prm << "set Output directory = results/" << name << "\n" << prm_text;
+      }
+    MPI_Barrier(comm);
     std::ostringstream screen;
     std::streambuf    *old  = std::cout.rdbuf(screen.rdbuf());
     const int          code = masonry::run_application({name + ".prm"}, comm);
@@ -43,6 +47,8 @@ namespace vault_tests
                   << screen.str();
         std::exit(1);
       }
+    // rank 0 writes summary.json
+    MPI_Barrier(comm);
     std::ifstream     in("results/" + name + "/summary.json");
     std::stringstream text;
     text << in.rdbuf();

@@ -91,6 +91,7 @@ namespace masonry
       public:
         Result
         optimise(
+          const MPI_Comm                                            comm,
           const std::function<double(const std::vector<double> &)> &fitness,
           const std::vector<double>                                &x0,
           const std::function<void(const Generation &)> &progress) override
@@ -103,7 +104,7 @@ namespace masonry
           settings.stall_generations = stall_generations;
           settings.parameter_1       = parameter_1;
           settings.parameter_2       = parameter_2;
-          return run_pagmo(settings, fitness, x0, progress);
+          return run_pagmo(comm, settings, fitness, x0, progress);
         }
 
       protected:
@@ -130,7 +131,8 @@ namespace masonry
         }
 
         Result
-        optimise(const std::function<double(const std::vector<double> &)> &,
+        optimise(const MPI_Comm,
+                 const std::function<double(const std::vector<double> &)> &,
                  const std::vector<double> &x0,
                  const std::function<void(const Generation &)> &) override
         {

@@ -73,41 +73,70 @@ namespace masonry
     } // namespace
 
     Result
-    run_pagmo(const PagmoSettings &settings,
+    run_pagmo(const MPI_Comm       comm,
+              const PagmoSettings &settings,
               const std::function<double(const std::vector<double> &)> &fitness,
               const std::vector<double>                                &x0,
               const std::function<void(const Generation &)> &progress)
     {
       const auto start = std::chrono::steady_clock::now();
-      Problem    udp;
+      int        rank = 0, size = 1;
+      MPI_Comm_rank(comm, &rank);
+      MPI_Comm_size(comm, &size);
+      const unsigned int seed = settings.seed + 1000u * rank;
+      Problem            udp;
       udp.function = std::make_shared<
         const std::function<double(const std::vector<double> &)>>(fitness);
       udp.counter               = std::make_shared<unsigned long>(0);
       udp.dimension             = x0.size();
       const auto        counter = udp.counter;
       pagmo::problem    problem{udp};
-      pagmo::population population{problem,
-                                   settings.population_size - 1,
-                                   settings.seed};
+      pagmo::population population{problem, settings.population_size - 1, seed};
       population.push_back(x0);
-      pagmo::algorithm algorithm = make_algorithm(settings);
+      PagmoSettings island         = settings;
+      island.seed                  = seed;
+      pagmo::algorithm   algorithm = make_algorithm(island);
+      const unsigned int n         = x0.size();
+
+      // the best mesh of all islands (ties: the lowest rank), on every rank
+      std::vector<double> best_x  = population.champion_x();
+      double              best_f  = population.champion_f()[0];
+      auto                migrate = [&]() {
+        const double        mine = population.champion_f()[0];
+        std::vector<double> all_f(size);
+        MPI_Allgather(&mine, 1, MPI_DOUBLE, all_f.data(), 1, MPI_DOUBLE, comm);
+        int winner = 0;
+        for (int r = 1; r < size; ++r)
+          if (all_f[r] < all_f[winner])
+            winner = r;
+        std::vector<double> x = population.champion_x();
+        MPI_Bcast(x.data(), n, MPI_DOUBLE, winner, comm);
+        if (all_f[winner] < best_f || best_x.empty())
+          {
+            best_f = all_f[winner];
+            best_x = x;
+          }
+        if (size > 1 && all_f[winner] < mine)
+          population.set_xf(population.worst_idx(), x, {all_f[winner]});
+      };
 
       Result result;
       auto   record = [&](const unsigned int g) {
         Generation line;
-        line.generation  = g;
-        line.evaluations = *counter;
-        line.best        = -population.champion_f()[0];
-        double       sum = 0;
-        unsigned int n   = 0;
+        line.generation = g;
+        migrate();
+        double local[3] = {double(*counter), 0., 0.}, global[3];
         for (const auto &f : population.get_f())
           if (f[0] < 1e299)
             {
-              sum -= f[0];
-              ++n;
+              local[1] -= f[0];
+              local[2] += 1;
             }
-        line.mean    = n > 0 ? sum / n : -1e300;
-        line.seconds = std::chrono::duration<double>(
+        MPI_Allreduce(local, global, 3, MPI_DOUBLE, MPI_SUM, comm);
+        line.evaluations = static_cast<unsigned long>(global[0]);
+        line.best        = -best_f;
+        line.mean        = global[2] > 0 ? global[1] / global[2] : -1e300;
+        line.seconds     = std::chrono::duration<double>(
                          std::chrono::steady_clock::now() - start)
                          .count();
         result.history.push_back(line);
@@ -125,9 +154,9 @@ namespace masonry
               stalled >= settings.stall_generations)
             break;
         }
-      result.best_genes   = population.champion_x();
-      result.best_fitness = -population.champion_f()[0];
-      result.evaluations  = *counter;
+      result.best_genes   = best_x;
+      result.best_fitness = -best_f;
+      result.evaluations  = result.history.back().evaluations;
       return result;
     }
   } // namespace adaptation

@@ -287,12 +287,17 @@ namespace masonry
       };
       const double uniform = fitness(x0);
       const auto   result =
-        optimiser->optimise(fitness, x0, [&](const adaptation::Generation &g) {
-          pcout << "  generation " << g.generation << ": best "
-                << std::setprecision(8) << g.best << ", mean " << g.mean << ", "
-                << g.evaluations << " evaluations, " << std::setprecision(3)
-                << g.seconds << " s\n";
-        });
+        optimiser->optimise(context.mpi_communicator,
+                            fitness,
+                            x0,
+                            [&](const adaptation::Generation &g) {
+                              pcout << "  generation " << g.generation
+                                    << ": best " << std::setprecision(8)
+                                    << g.best << ", mean " << g.mean << ", "
+                                    << g.evaluations << " evaluations, "
+                                    << std::setprecision(3) << g.seconds
+                                    << " s\n";
+                            });
       const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
           .count();
@@ -308,7 +313,9 @@ namespace masonry
       a["population_size"] = optimiser->population_size;
       a["generations"] =
         result.history.empty() ? 0 : result.history.back().generation;
-      a["evaluations"]            = result.evaluations + 1;
+      a["evaluations"] = result.evaluations + 1;
+      a["islands"] =
+        dealii::Utilities::MPI::n_mpi_processes(context.mpi_communicator);
       a["failed_evaluations"]     = n_failed;
       a["seconds"]                = seconds;
       a["evaluations_per_second"] = (result.evaluations + 1) / seconds;

@@ -63,10 +63,13 @@ namespace masonry
       /**
        * Maximise @p fitness over [0, 1]^n with n = x0.size(), from a
        * population that contains @p x0. @p progress is called after every
-       * generation. Non-finite fitness values count as the worst.
+       * generation. Non-finite fitness values count as the worst. Every rank
+       * of @p comm evolves an island of its own (see run_pagmo()); the
+       * result is the same on all ranks.
        */
       virtual Result
       optimise(
+        const MPI_Comm                                            comm,
         const std::function<double(const std::vector<double> &)> &fitness,
         const std::vector<double>                                &x0,
         const std::function<void(const Generation &)>            &progress) = 0;

@@ -7,6 +7,7 @@
 #define masonry_adaptation_pagmo_runner_h
 
 #include <functional>
+#include <mpi.h>
 #include <string>
 #include <vector>
 
@@ -65,7 +66,8 @@ namespace masonry
      * contains @p x0; non-finite fitness values count as the worst.
      */
     Result
-    run_pagmo(const PagmoSettings &settings,
+    run_pagmo(const MPI_Comm       comm,
+              const PagmoSettings &settings,
               const std::function<double(const std::vector<double> &)> &fitness,
               const std::vector<double>                                &x0,
               const std::function<void(const Generation &)> &progress);
