@@ -19,10 +19,8 @@ namespace masonry
     Optimiser::selection_documentation()
     {
       return "Adaptation of the block mesh (seed paper, section 3): the "
-             "interior parameter lines of every patch (`lines' genes: "
-             "n_u − 1 per patch for the lines u = const, n_v − 1 shared by "
-             "all patches for the lines v = const, so that patches glued "
-             "along v stay compatible) move until the rigid-block "
+             "interior parameter lines of every patch (and with `Mesh genes "
+             "= vertices' every interior vertex) move until the rigid-block "
              "analysis finds its best answer: the largest work of the loads "
              "minus dissipation (`settlement'), the smallest load "
              "multiplier (`limit load') or the largest minimum thickness "
@@ -35,6 +33,17 @@ namespace masonry
     void
     Optimiser::declare_common_parameters(dealii::ParameterHandler &prm)
     {
+      prm.declare_entry(
+        "Mesh genes",
+        "lines",
+        dealii::Patterns::Selection("lines|vertices"),
+        "What moves: `lines' moves whole parameter lines (n_u − 1 genes per "
+        "patch for the lines u = const, n_v − 1 shared by all patches for "
+        "the lines v = const); `vertices' in addition moves every interior "
+        "vertex of every patch in (u, v), by at most 30 % of the gap to the "
+        "neighbouring lines (two more genes per interior vertex), while the "
+        "boundary vertices slide along the boundary with the lines, so "
+        "glued patches stay compatible.");
       prm.declare_entry("Population size",
                         "16",
                         dealii::Patterns::Integer(5, 10000),
@@ -71,6 +80,7 @@ namespace masonry
       seed               = prm.get_integer("Seed");
       stall_generations  = prm.get_integer("Stall generations");
       minimum_block_size = prm.get_double("Minimum block size");
+      vertex_genes       = prm.get("Mesh genes") == "vertices";
     }
 
     void

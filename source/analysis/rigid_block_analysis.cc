@@ -219,6 +219,11 @@ namespace masonry
           genes.push_back(double(k) / options.n_u);
       for (unsigned int k = 1; k < options.n_v; ++k)
         genes.push_back(double(k) / options.n_v);
+      // `vertices': two offsets per interior vertex, 1/2 = no offset
+      if (optimiser->vertex_genes)
+        genes.resize(genes.size() + 2 * geometry->patches().size() *
+                                      (options.n_u - 1) * (options.n_v - 1),
+                     0.5);
       return genes;
     }
 
@@ -228,8 +233,12 @@ namespace masonry
     {
       const unsigned int n_patches = geometry->patches().size();
       const unsigned int nu = options.n_u, nv = options.n_v;
-      const double       h = optimiser->minimum_block_size;
-      AssertThrow(genes.size() == n_patches * (nu - 1) + (nv - 1),
+      const double       h       = optimiser->minimum_block_size;
+      const unsigned int n_lines = n_patches * (nu - 1) + (nv - 1);
+      AssertThrow(genes.size() ==
+                    n_lines + (optimiser->vertex_genes ?
+                                 2 * n_patches * (nu - 1) * (nv - 1) :
+                                 0),
                   dealii::ExcMessage("wrong number of mesh genes"));
       auto positions = [&](const unsigned int first, const unsigned int n) {
         std::vector<double> q(genes.begin() + first,
@@ -249,6 +258,23 @@ namespace masonry
           for (unsigned int j = 0; j <= nv; ++j)
             for (unsigned int i = 0; i <= nu; ++i)
               vertices[p].emplace_back(u[i], v[j]);
+          if (!optimiser->vertex_genes)
+            continue;
+          // interior vertices move off the line intersections by at most
+          // 30 % of the gap to the neighbouring line on either side, so
+          // that neighbouring vertices cannot cross and cells stay valid
+          for (unsigned int j = 1; j < nv; ++j)
+            for (unsigned int i = 1; i < nu; ++i)
+              {
+                const unsigned int g =
+                  n_lines +
+                  2 * (p * (nu - 1) * (nv - 1) + (j - 1) * (nu - 1) + (i - 1));
+                const double du = 2 * std::clamp(genes[g], 0., 1.) - 1;
+                const double dv = 2 * std::clamp(genes[g + 1], 0., 1.) - 1;
+                auto        &x  = vertices[p][j * (nu + 1) + i];
+                x[0] += 0.3 * du * (du < 0 ? u[i] - u[i - 1] : u[i + 1] - u[i]);
+                x[1] += 0.3 * dv * (dv < 0 ? v[j] - v[j - 1] : v[j + 1] - v[j]);
+              }
         }
       return vertices;
     }

@@ -82,6 +82,8 @@ namespace masonry
       unsigned int seed = 1;
       /** Stop after this many generations without improvement (0: never). */
       unsigned int stall_generations = 5;
+      /** Whether interior vertices move too (`Mesh genes = vertices`). */
+      bool vertex_genes = false;
       /** Smallest block size, as a fraction of the parameter range. */
       double minimum_block_size = 0.02;
     };
