@@ -237,12 +237,17 @@ namespace masonry
           }
       }
 
-      // amplification of displacements for the deformed pictures
+      // amplification of displacements for the deformed pictures: the
+      // support motion counts too, so that the round-off motion of blocks
+      // that stay put (a vault lifting off a settling support) is not blown
+      // up to 5 % of the vault
+      const double displacement_scale =
+        std::max(max_displacement, max_support_motion);
       const double amplification =
         options.amplification > 0 ?
           options.amplification :
-          (max_displacement > 0 ?
-             0.05 * model.length_scale() / max_displacement :
+          (displacement_scale > 0 ?
+             0.05 * model.length_scale() / displacement_scale :
              1.0);
       context.summary["displacement_amplification"] = amplification;
 
@@ -400,12 +405,15 @@ namespace masonry
           if (std::filesystem::exists(script) &&
               std::filesystem::exists(python))
             {
-              const std::string png = dir.path() + "vault.png";
+              const std::string  png = dir.path() + "vault.png";
+              std::ostringstream amplification_text;
+              amplification_text << std::setprecision(17) << amplification;
               const std::string command =
                 python + " '" + script + "' '" + dir.path() + "blocks.vtu' '" +
                 png + "' '" +
                 xml_escape(context.summary.at("analysis").as_string()) +
-                "' > /dev/null 2>&1";
+                "' --amplification " + amplification_text.str() +
+                " > /dev/null 2>&1";
               if (std::system(command.c_str()) == 0)
                 dir.file("vault.png");
               else
