@@ -63,7 +63,8 @@ namespace masonry
      * Write the results of a solved rigid-block problem: the crack list
      * into the summary, interface_forces.csv (@p forces: per contact point
      * normal, across and along forces, N, compression positive),
-     * cracks.csv, blocks.vtu, interfaces.vtu, vault.pvd and vault.png.
+     * blocks.csv (centroid, translation and rotation of every block, full
+     * precision), blocks.vtu, interfaces.vtu, vault.pvd and vault.png.
      * @p settlement gives the ground motion at a support point with a
      * label.
      */
