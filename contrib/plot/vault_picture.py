@@ -168,6 +168,25 @@ def main():
         else:
             subtitle = "no interface opens"
 
+    # the line of thrust (limit load, minimum thickness): the centres of
+    # pressure of the joints, in the undeformed geometry
+    thrust_csv = os.path.join(os.path.dirname(vtu), "thrust_line.csv")
+    if os.path.exists(thrust_csv):
+        rows = [line.split(",") for line in open(thrust_csv) if line[0].isdigit()]
+        if rows:
+            xyz = np.array([[float(r[3]), float(r[4]), float(r[5])] for r in rows])
+            extent = points.max(axis=0) - points.min(axis=0)
+            if extent[1] < 0.5 * max(extent[0], extent[2]):
+                # a strip (arch): one point per joint across the depth, joined
+                # along the span
+                xyz = xyz[np.argsort(xyz[:, 0])]
+                ax.plot(xyz[:, 0], xyz[:, 1], xyz[:, 2], "k.-", lw=1.2, ms=4, zorder=5,
+                        label="line of thrust (undeformed)")
+            else:
+                ax.scatter(xyz[:, 0], xyz[:, 1], xyz[:, 2], c="k", s=6, zorder=5,
+                           label="centres of pressure (undeformed)")
+            ax.legend(loc="lower left", fontsize=8)
+
     lo, hi = points.min(axis=0), points.max(axis=0)
     centre, half = (lo + hi) / 2, (hi - lo).max() / 2
     for setter, c in zip((ax.set_xlim, ax.set_ylim, ax.set_zlim), centre):
