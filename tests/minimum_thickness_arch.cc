@@ -145,10 +145,11 @@ main(int argc, char **argv)
             << "," << angle << "," << size << "," << ratio_last << ","
             << s.at("wall_seconds").as_number() << "\n";
       // nested meshes: more joints, more mechanisms, t/R can only grow
-      // (up to the LP tolerances, which decide unboundedness near the
-      // threshold: about 5e-6 relative)
-      decreasing = decreasing && t_over_R <= reference * (1 + 1e-5) &&
-                   error <= previous_error + 1e-5;
+      // (up to the LP tolerances: Clp's dual feasibility tolerance, 1e-7,
+      // decides unboundedness near the threshold, which scatters t/R by
+      // about 1e-5 relative)
+      decreasing = decreasing && t_over_R <= reference * (1 + 3e-5) &&
+                   error <= previous_error + 3e-5;
       previous_error = error;
       finest_error   = error;
     }

@@ -128,8 +128,10 @@ namespace masonry
                         "0",
                         dealii::Patterns::Double(0),
                         "Factor on displacements in the deformed VTU and "
-                        "picture; 0 chooses one that makes the largest "
-                        "displacement 5 % of the vault's size.");
+                        "picture (dimensionless); 0 chooses one that makes "
+                        "the larger of the largest block displacement and "
+                        "the largest support motion 5 % of the vault's "
+                        "size.");
       prm.declare_entry("Output subdivisions",
                         "4",
                         dealii::Patterns::Integer(1, 32),
