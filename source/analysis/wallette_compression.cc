@@ -195,6 +195,18 @@ namespace masonry
           "coincident faces, so the wallette is one continuum without "
           "joints (a perfectly bonded reference).");
         prm.declare_entry(
+          "Mesh distortion",
+          "0",
+          Double(0, 0.2),
+          "Amplitude of a smooth distortion of the hexahedra, as a "
+          "fraction of the mesh spacing in each direction (dimensionless; "
+          "0: the regular mesh). With `Joints = interfaces' the vertices "
+          "inside each brick move by a bubble that vanishes on the brick's "
+          "faces, so joint faces and the wallette's faces stay unchanged; "
+          "with `Joints = bonded' one smooth map moves all vertices and "
+          "keeps each face of the wallette in its plane. For patch tests "
+          "(uniform compression has the same exact solution).");
+        prm.declare_entry(
           "Write CalculiX input",
           "false",
           Bool(),
@@ -263,6 +275,7 @@ namespace masonry
                                  "needs `Joints = bonded' (CalculiX has no "
                                  "interfaces of this model)"));
         s.gauge_length = prm.get_double("Gauge length");
+        s.distortion   = prm.get_double("Mesh distortion");
       }
 
       void

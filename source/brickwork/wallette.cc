@@ -219,6 +219,38 @@ namespace masonry
         const auto               h = mesh_spacing(settings);
         std::vector<Point<3>>    vertices;
         std::vector<CellData<3>> cells;
+        for (const Box &box : boxes)
+          {
+            height    = std::max(height, box.upper[2]);
+            length    = std::max(length, box.upper[0]);
+            thickness = std::max(thickness, box.upper[1]);
+          }
+        const double pi = numbers::PI, delta = settings.distortion;
+        const double extent[3] = {length, thickness, height};
+        // the distortion: waves of a few cells' length (so that the cells
+        // are not parallelepipeds), times a factor that vanishes on the
+        // faces of the brick (interfaces) or of the wallette (bonded)
+        auto distort = [&](const Point<3> &p, const double(&xi)[3]) {
+          if (delta == 0)
+            return p;
+          const double w[3] = {
+            std::cos(1.7 * pi * p[2] / h[2] + 0.9 * pi * p[1] / h[1]),
+            std::cos(1.3 * pi * p[0] / h[0] + 0.7 * pi * p[2] / h[2]),
+            std::cos(1.1 * pi * p[0] / h[0] + 1.9 * pi * p[1] / h[1])};
+          // sin(pi t), exactly 0 on the faces
+          auto bump = [&](const double t) {
+            return t <= 1e-12 || t >= 1 - 1e-12 ? 0. : std::sin(pi * t);
+          };
+          Point<3> q = p;
+          for (unsigned int d = 0; d < 3; ++d)
+            {
+              const double factor = settings.bonded ?
+                                      bump(p[d] / extent[d]) :
+                                      bump(xi[0]) * bump(xi[1]) * bump(xi[2]);
+              q[d] += delta * h[d] * factor * w[d];
+            }
+          return q;
+        };
         for (unsigned int b = 0; b < boxes.size(); ++b)
           {
             const Box   &box = boxes[b];
@@ -227,18 +259,22 @@ namespace masonry
               {
                 n[d] = divisions(box, d, h[d]);
                 Assert(n[d] > 0, ExcInternalError());
-                height    = std::max(height, box.upper[2]);
-                length    = std::max(length, box.upper[0]);
-                thickness = std::max(thickness, box.upper[1]);
               }
             const unsigned int first = vertices.size();
             for (unsigned int k = 0; k <= n[2]; ++k)
               for (unsigned int j = 0; j <= n[1]; ++j)
                 for (unsigned int i = 0; i <= n[0]; ++i)
-                  vertices.emplace_back(
-                    box.lower[0] + (box.upper[0] - box.lower[0]) * i / n[0],
-                    box.lower[1] + (box.upper[1] - box.lower[1]) * j / n[1],
-                    box.lower[2] + (box.upper[2] - box.lower[2]) * k / n[2]);
+                  {
+                    const double xi[3] = {double(i) / n[0],
+                                          double(j) / n[1],
+                                          double(k) / n[2]};
+                    vertices.push_back(distort(
+                      Point<3>(
+                        box.lower[0] + (box.upper[0] - box.lower[0]) * xi[0],
+                        box.lower[1] + (box.upper[1] - box.lower[1]) * xi[1],
+                        box.lower[2] + (box.upper[2] - box.lower[2]) * xi[2]),
+                      xi));
+                  }
             auto index = [&](unsigned int i, unsigned int j, unsigned int k) {
               return first + i + (n[0] + 1) * (j + (n[1] + 1) * k);
             };

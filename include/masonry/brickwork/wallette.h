@@ -76,6 +76,17 @@ namespace masonry
        * (nodal_displacements.csv) in the same numbering.
        */
       bool write_calculix = false;
+      /**
+       * Amplitude of a smooth distortion of the mesh, as a fraction of the
+       * mesh spacing in each direction (dimensionless, 0 to 0.2; 0: the
+       * regular mesh). With interfaces, each brick's vertices move by a
+       * bubble that vanishes on the brick's faces (joint faces and the
+       * wallette's faces stay as they are); with `bonded' joints, one
+       * global map moves every vertex but keeps each face of the wallette
+       * in its plane. For patch tests: the exact solution of uniform
+       * compression does not change.
+       */
+      double distortion = 0;
     };
 
     /** Mesh spacing in x, y, z (m). */
