@@ -18,6 +18,8 @@
 #include <string>
 #include <vector>
 
+#include "vault_tests.h"
+
 namespace brickwork_tests
 {
   /**
@@ -34,38 +36,10 @@ namespace brickwork_tests
            wallette + "end\n" + plugins;
   }
 
-  /**
-   * Write @p text to NAME.prm on rank 0 (output into results/NAME), run
-   * masonry on @p comm with the screen discarded and return summary.json.
-   * The test fails if masonry fails.
-   */
-  inline masonry::Json
-  run(const std::string &name,
-      const std::string &text,
-      const MPI_Comm     comm = MPI_COMM_WORLD)
-  {
-    if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
-      std::ofstream(name + ".prm")
-        << "set Output directory = results/" << name << "\n"
-        << text;
-    MPI_Barrier(comm);
-    std::ostringstream screen;
-    std::streambuf    *old  = std::cout.rdbuf(screen.rdbuf());
-    const int          code = masonry::run_application({name + ".prm"}, comm);
-    std::cout.rdbuf(old);
-    if (code != 0)
-      {
-        std::cout << "FAILED: masonry returned " << code << " for " << name
-                  << "\n"
-                  << screen.str();
-        std::exit(1);
-      }
-    MPI_Barrier(comm);
-    std::ifstream     in("results/" + name + "/summary.json");
-    std::stringstream s;
-    s << in.rdbuf();
-    return masonry::Json::parse(s.str());
-  }
+  // run(), check() and relative() are the rigid-block tests' helpers
+  using vault_tests::check;
+  using vault_tests::relative;
+  using vault_tests::run;
 
   /** The columns of results/NAME/curve.csv, row by row. */
   inline std::vector<std::vector<double>>
@@ -85,21 +59,6 @@ namespace brickwork_tests
         rows.push_back(row);
       }
     return rows;
-  }
-
-  /** Print "OK what" or "FAILED what". */
-  inline bool
-  check(const bool ok, const std::string &what)
-  {
-    std::cout << (ok ? "OK " : "FAILED ") << what << "\n";
-    return ok;
-  }
-
-  /** Relative difference of @p a and @p b. */
-  inline double
-  relative(const double a, const double b)
-  {
-    return std::abs(a - b) / std::max(std::abs(b), 1e-300);
   }
 } // namespace brickwork_tests
 
