@@ -292,6 +292,43 @@ namespace masonry
     BrickMaterial::parse_parameters(dealii::ParameterHandler &)
     {}
 
+    dealii::SymmetricTensor<4, 3>
+    BrickMaterial::elastic_stiffness() const
+    {
+      const double E = youngs_modulus(), nu = poissons_ratio();
+      const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu)),
+                   mu     = E / (2 * (1 + nu));
+      return lambda *
+               dealii::outer_product(dealii::unit_symmetric_tensor<3>(),
+                                     dealii::unit_symmetric_tensor<3>()) +
+             2 * mu * dealii::identity_tensor<3>();
+    }
+
+    void
+    BrickMaterial::evaluate(const dealii::SymmetricTensor<2, 3> &strain,
+                            const BrickState                    &old,
+                            const BrickPoint &,
+                            BrickState                    &updated,
+                            dealii::SymmetricTensor<2, 3> &stress,
+                            dealii::SymmetricTensor<4, 3> &tangent) const
+    {
+      tangent = elastic_stiffness();
+      stress  = tangent * strain;
+      updated = old;
+    }
+
+    void
+    BrickMaterial::check_point(const BrickPoint &) const
+    {}
+
+    bool
+    BrickMaterial::is_elastic(const dealii::SymmetricTensor<2, 3> &,
+                              const BrickState &,
+                              const BrickPoint &) const
+    {
+      return is_linear();
+    }
+
     /** Isotropic linear elasticity. */
     class ElasticBrick : public BrickMaterial
     {

@@ -1,18 +1,73 @@
 /**
  * @file
  * Constitutive laws of the enlarged bricks (`subsection Brick material`,
- * `set Model = ...`). Only `elastic` exists now; the damage–plasticity law
- * of the cyclic study is the next plugin of this interface.
+ * `set Model = ...`): `elastic` and `damage plasticity`.
  */
 #ifndef masonry_brickwork_brick_material_h
 #define masonry_brickwork_brick_material_h
 
 #include <masonry/core/plugins.h>
 
+#include <deal.II/base/symmetric_tensor.h>
+
 namespace masonry
 {
   namespace brickwork
   {
+    /**
+     * State of a brick integration point: everything a material needs from
+     * the last converged step. Materials that have no history leave it at
+     * its initial values. Stored per quadrature point with deal.II's
+     * CellDataStorage and written to checkpoints by serialize().
+     */
+    struct BrickState
+    {
+      /** Plastic strain (dimensionless). */
+      dealii::SymmetricTensor<2, 3> plastic_strain;
+      /**
+       * Damage thresholds in tension and compression, as effective stress
+       * (Pa); 0 until the first evaluation sets them to the initial
+       * strengths.
+       */
+      double threshold_t = 0, threshold_c = 0;
+      /** Equivalent plastic strains reached on the two envelopes. */
+      double kappa_t = 0, kappa_c = 0;
+      /**
+       * Damage in tension and compression (0 intact to 1), after the
+       * viscous regularisation when the material has one.
+       */
+      double damage_t = 0, damage_c = 0;
+
+      /** Write or read the state (boost serialisation). */
+      template <class Archive>
+      void
+      serialize(Archive &ar, const unsigned int)
+      {
+        ar &plastic_strain &threshold_t &threshold_c &kappa_t &kappa_c &damage_t
+          &damage_c;
+      }
+    };
+
+    /** What a material needs to know about the point besides its strain. */
+    struct BrickPoint
+    {
+      /**
+       * Characteristic length of the element (m): the cube root of its
+       * volume; softening is regularised with fracture energy / this.
+       */
+      double characteristic_length = 1;
+      /**
+       * Increment of (pseudo) time of the step, s, for the viscous
+       * regularisation; 0: no viscosity in this evaluation.
+       */
+      double time_step = 0;
+      /**
+       * Factor on the strengths of this brick (dimensionless, 1: the
+       * nominal strengths): the random scatter of a specimen.
+       */
+      double strength_factor = 1;
+    };
+
     /** Base class of brick materials. */
     class BrickMaterial
     {
@@ -42,7 +97,8 @@ namespace masonry
 
       /**
        * Whether stress is a fixed linear function of strain: then the
-       * assembly computes each cell matrix once and reuses it.
+       * assembly computes each cell matrix once and reuses it, and no
+       * state is stored.
        */
       virtual bool
       is_linear() const = 0;
@@ -56,6 +112,46 @@ namespace masonry
       /** Poisson's ratio of the initial stiffness. */
       virtual double
       poissons_ratio() const = 0;
+
+      /**
+       * Stress (Pa) and algorithmic tangent d stress / d strain (Pa) at the
+       * total @p strain, starting from the converged state @p old; the new
+       * state goes to @p updated (kept by the caller only when the step
+       * converges). The default is linear elasticity with the initial
+       * stiffness.
+       */
+      virtual void
+      evaluate(const dealii::SymmetricTensor<2, 3> &strain,
+               const BrickState                    &old,
+               const BrickPoint                    &point,
+               BrickState                          &updated,
+               dealii::SymmetricTensor<2, 3>       &stress,
+               dealii::SymmetricTensor<4, 3>       &tangent) const;
+
+      /**
+       * Whether evaluate() at @p strain from @p old would give exactly the
+       * initial elastic response (stress = C0 : strain, tangent C0, state
+       * unchanged): intact, no plastic strain, inside the initial elastic
+       * domain. The assembly then uses the cell's cached elastic matrix.
+       * The default: is_linear().
+       */
+      virtual bool
+      is_elastic(const dealii::SymmetricTensor<2, 3> &strain,
+                 const BrickState                    &old,
+                 const BrickPoint                    &point) const;
+
+      /**
+       * Check that the material can be used at @p point (for example that
+       * the element is small enough for the softening branch regularised
+       * with its fracture energy); throws ExcParameter naming the entry to
+       * change. Nothing by default.
+       */
+      virtual void
+      check_point(const BrickPoint &point) const;
+
+      /** The initial elastic stiffness C0 (Pa). */
+      dealii::SymmetricTensor<4, 3>
+      elastic_stiffness() const;
     };
   } // namespace brickwork
 } // namespace masonry
