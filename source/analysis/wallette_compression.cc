@@ -216,6 +216,101 @@ namespace masonry
           "nodal_displacements.csv (this run's final displacements, m, in "
           "the same node numbering). Needs `Joints = bonded' and an elastic "
           "brick material.");
+        prm.declare_entry(
+          "Protocol",
+          "monotonic",
+          Selection("monotonic|cyclic"),
+          "`monotonic': the top platen moves to the target strain in one "
+          "ramp. `cyclic': load-unload cycles at increasing amplitudes "
+          "(`Cycle amplitudes'), each unloaded under displacement control "
+          "until the stress has dropped to `Unloading stress'; cycles.csv "
+          "and envelope.csv give per cycle the peak stress, residual "
+          "strain, unloading modulus and dissipated energy, and the "
+          "envelope, common-point and stability-point stresses.");
+        prm.declare_entry(
+          "Cycle amplitudes",
+          "",
+          dealii::Patterns::List(Double(0)),
+          "Strains (platen displacement / height, dimensionless, "
+          "increasing) at which the cycles of the `cyclic' protocol turn "
+          "back. Empty: k times `Amplitude increment' for k = 1, 2, ... up "
+          "to `Target strain'.");
+        prm.declare_entry("Amplitude increment",
+                          "0.0005",
+                          Double(0),
+                          "Strain added from one amplitude to the next when "
+                          "`Cycle amplitudes' is empty (dimensionless, > 0).");
+        prm.declare_entry("Cycles per amplitude",
+                          "1",
+                          Integer(1, 100),
+                          "Load-unload cycles at each amplitude; 2 or more "
+                          "give the common-point and stability-point "
+                          "curves.");
+        prm.declare_entry("Unloading stress",
+                          "0.1e6",
+                          Double(0),
+                          "An unloading ends when the stress (platen force "
+                          "/ gross area) has dropped to this, Pa (>= 0): "
+                          "the small target force of a test.");
+        prm.declare_entry(
+          "Platen speed",
+          "1e-5",
+          Double(0),
+          "Speed of the top platen, m/s (> 0): the pseudo-time of a step "
+          "is its platen displacement / this speed. It matters only for "
+          "the viscous regularisation of the brick and joint damage "
+          "(`Viscosity' of the material and the interface law).");
+        prm.declare_entry(
+          "Deletion strain",
+          "0",
+          Double(0),
+          "Element deletion: after a converged step, cells whose maximum "
+          "principal strain (of the cell-averaged strain, dimensionless) "
+          "exceeds this are removed from the model, the largest first, at "
+          "most `Maximum deletions per step' at a time; joints at a deleted "
+          "cell go with it, and nodes left without a cell are held where "
+          "they are. 0: no deletion. Deleted cells are flagged in "
+          "solution.pvd (`deleted') and counted in curve.csv.");
+        prm.declare_entry("Maximum deletions per step",
+                          "10",
+                          Integer(1, 100000),
+                          "Cap of the cells deleted after one step.");
+        prm.declare_entry(
+          "Strength scatter",
+          "0",
+          Double(0, 0.5),
+          "Coefficient of variation of the strengths (dimensionless, 0 to "
+          "0.5; 0: every brick and joint has the nominal strengths). Each "
+          "brick and each joint (pair of bricks) draws a normal factor 1 + "
+          "this x N(0, 1), kept within 0.2 to 1.8, on its strengths "
+          "(a specimen of a series).");
+        prm.declare_entry("Random seed",
+                          "1",
+                          Integer(0),
+                          "Seed of the strength factors: the same seed gives "
+                          "the same specimen.");
+        prm.declare_entry(
+          "Checkpoint interval",
+          "0",
+          Integer(0),
+          "Write the state (displacements, brick and joint histories, "
+          "deleted cells, protocol position, curve) to checkpoint.RANK in "
+          "the output directory every this many converged steps (0: only "
+          "when the run stops early: no convergence or `Maximum steps').");
+        prm.declare_entry(
+          "Resume",
+          "false",
+          Bool(),
+          "Continue from the checkpoint in the output directory (written "
+          "by an earlier run of the same parameter file with the same "
+          "number of MPI ranks) instead of starting from zero; the curve "
+          "and results continue as if the run had not stopped.");
+        prm.declare_entry("Maximum steps",
+                          "0",
+                          Integer(0),
+                          "Stop after this many converged steps of this run "
+                          "with status `interrupted' and a checkpoint (0: no "
+                          "limit); `Resume = true' continues.");
         prm.declare_entry("Write plot",
                           "true",
                           Bool(),
@@ -275,7 +370,31 @@ namespace masonry
                                  "needs `Joints = bonded' (CalculiX has no "
                                  "interfaces of this model)"));
         s.gauge_length = prm.get_double("Gauge length");
-        s.distortion   = prm.get_double("Mesh distortion");
+        cyclic         = prm.get("Protocol") == "cyclic";
+        amplitudes =
+          split_doubles(prm.get("Cycle amplitudes"), "Cycle amplitudes");
+        amplitude_increment    = positive("Amplitude increment");
+        s.cycles_per_amplitude = prm.get_integer("Cycles per amplitude");
+        s.unloading_stress     = prm.get_double("Unloading stress");
+        s.platen_speed         = positive("Platen speed");
+        s.deletion_strain      = prm.get_double("Deletion strain");
+        s.max_deletions        = prm.get_integer("Maximum deletions per step");
+        s.strength_scatter     = prm.get_double("Strength scatter");
+        s.seed                 = prm.get_integer("Random seed");
+        s.checkpoint_interval  = prm.get_integer("Checkpoint interval");
+        s.resume               = prm.get_bool("Resume");
+        s.max_steps            = prm.get_integer("Maximum steps");
+        for (unsigned int i = 1; i < amplitudes.size(); ++i)
+          AssertThrow(amplitudes[i] > amplitudes[i - 1],
+                      ExcParameter("Cycle amplitudes",
+                                   "must increase from one cycle to the "
+                                   "next"));
+        AssertThrow(amplitudes.empty() || amplitudes[0] > 0,
+                    ExcParameter("Cycle amplitudes", "must be positive"));
+        AssertThrow(!cyclic || !s.write_calculix,
+                    ExcParameter("Write CalculiX input",
+                                 "needs the monotonic protocol"));
+        s.distortion = prm.get_double("Mesh distortion");
       }
 
       void
@@ -289,7 +408,25 @@ namespace masonry
         plugins::ParsePathScope scope("Wallette");
         boxes = bond->layout(s.size);
         brickwork::check_mesh(boxes, s);
-        s.target_displacement = target_strain * s.size.height * s.size.courses;
+        const double H        = s.size.height * s.size.courses;
+        s.target_displacement = target_strain * H;
+        s.cycle_amplitudes.clear();
+        if (cyclic)
+          {
+            if (amplitudes.empty())
+              for (unsigned int k = 1;
+                   k * amplitude_increment <= target_strain * (1 + 1e-9);
+                   ++k)
+                s.cycle_amplitudes.push_back(k * amplitude_increment * H);
+            else
+              for (const double a : amplitudes)
+                s.cycle_amplitudes.push_back(a * H);
+            AssertThrow(!s.cycle_amplitudes.empty(),
+                        ExcParameter("Amplitude increment",
+                                     "is larger than the target strain: no "
+                                     "cycle"));
+            s.target_displacement = s.cycle_amplitudes.back();
+          }
       }
 
       void
@@ -301,6 +438,9 @@ namespace masonry
     private:
       brickwork::WalletteSettings               s;
       double                                    target_strain = 0.003;
+      bool                                      cyclic        = false;
+      std::vector<double>                       amplitudes;
+      double                                    amplitude_increment = 0;
       std::unique_ptr<brickwork::Bond>          bond;
       std::unique_ptr<brickwork::BrickMaterial> material;
       std::unique_ptr<brickwork::InterfaceLaw>  law;
@@ -316,9 +456,12 @@ MASONRY_REGISTER_ANALYSIS(
   "platens: enlarged bricks (brick plus half joint) of 8-node hexahedra, "
   "joints as zero-thickness interfaces (`Interface law'), bricks from "
   "`Brick material', laid in the `Bond' pattern. The bottom platen is "
-  "fixed, the top one moves monotonically to the target strain under "
-  "displacement control (Newton-Raphson, line search, adaptive steps). "
-  "Writes curve.csv (stress = platen force / gross area, strain = platen "
-  "displacement / height), curve.png, VTU time series and summary.json "
-  "(peak_stress in Pa, strain_at_peak, initial_modulus in Pa, joint "
-  "counts, steps, Newton iterations, cut-backs, seconds).")
+  "fixed, the top one moves under displacement control, monotonically to "
+  "the target strain or in load-unload cycles (`Protocol'), solved by "
+  "Newton-Raphson with line search and adaptive steps; cells can be "
+  "deleted at a threshold strain. Writes curve.csv (stress = platen force "
+  "/ gross area, strain = platen displacement / height), curve.png, "
+  "cycles.csv, envelope.csv and degradation.png (cyclic), VTU time series "
+  "and summary.json (peak_stress in Pa, strain_at_peak, initial_modulus in "
+  "Pa, joint counts, steps, Newton iterations, cut-backs, deleted cells, "
+  "seconds). Checkpoints allow a stopped run to resume.")

@@ -60,6 +60,15 @@ namespace masonry
                         "Penalty stiffness k_s of the joint in both "
                         "directions of slip, Pa/m (> 0); the same formula "
                         "as k_n with the shear moduli G_u, G_m.");
+      prm.declare_entry(
+        "Viscosity",
+        "0",
+        dealii::Patterns::Double(0),
+        "Viscous regularisation of the joint damage, s (>= 0; 0: none): "
+        "the damage used is d_v = (d + (mu / dt) d_v,old) / (1 + mu / dt), "
+        "with dt the pseudo-time of the step (platen displacement increment "
+        "/ `Platen speed'). Keep mu well below the duration of the test to "
+        "stay close to the rate-independent law.");
     }
 
     void
@@ -67,6 +76,7 @@ namespace masonry
     {
       normal_stiffness = prm.get_double("Normal stiffness");
       shear_stiffness  = prm.get_double("Shear stiffness");
+      viscosity        = prm.get_double("Viscosity");
       AssertThrow(normal_stiffness > 0,
                   ExcParameter("Normal stiffness", "must be positive"));
       AssertThrow(shear_stiffness > 0,
@@ -88,6 +98,7 @@ namespace masonry
       void
       evaluate(const Local3 &jump,
                const InterfaceHistory &,
+               const InterfacePoint &,
                InterfaceHistory &,
                Local3  &t,
                Local33 &tangent) const override
@@ -182,10 +193,14 @@ namespace masonry
                     ExcParameter("Mode II fracture energy", m2.str()));
       }
 
-      /** Damage from the opening alone (no history). */
+      /**
+       * Damage from the opening alone (no history), with the strengths
+       * multiplied by @p factor.
+       */
       double
-      damage(const Local3 &jump) const
+      damage(const Local3 &jump, const double factor) const
       {
+        const double f_t = factor * this->f_t, c = factor * this->c;
         const double kn = normal_stiffness, ks = shear_stiffness;
         const double dn  = jump[0];
         const double ds  = std::sqrt(jump[1] * jump[1] + jump[2] * jump[2]);
@@ -220,16 +235,24 @@ namespace masonry
       void
       evaluate(const Local3           &jump,
                const InterfaceHistory &old,
+               const InterfacePoint   &point,
                InterfaceHistory       &updated,
                Local3                 &t,
                Local33                &tangent) const override
       {
-        const double k[3]  = {normal_stiffness,
-                              shear_stiffness,
-                              shear_stiffness};
-        const double trial = damage(jump);
-        const double d     = std::max(old.damage, trial);
-        updated.damage     = d;
+        const double k[3]       = {normal_stiffness,
+                                   shear_stiffness,
+                                   shear_stiffness};
+        const double phi        = point.strength_factor;
+        const double trial      = damage(jump, phi);
+        const bool   loading    = trial > old.damage_inviscid;
+        updated.damage_inviscid = std::max(old.damage_inviscid, trial);
+        // viscous regularisation: d_v = (d + a d_v,old) / (1 + a)
+        const double a = viscosity > 0 && point.time_step > 0 ?
+                           viscosity / point.time_step :
+                           0.;
+        const double d = (updated.damage_inviscid + a * old.damage) / (1 + a);
+        updated.damage = d;
         // no damage of the normal stiffness in compression
         const double f[3] = {jump[0] > 0 ? 1 - d : 1., 1 - d, 1 - d};
         for (unsigned int i = 0; i < 3; ++i)
@@ -238,7 +261,7 @@ namespace masonry
             for (unsigned int j = 0; j < 3; ++j)
               tangent[i][j] = (i == j ? f[i] * k[i] : 0);
           }
-        if (trial > old.damage && trial < 1)
+        if (loading && trial < 1)
           {
             // loading: derivative of the damage by central differences
             // of the closed-form damage function
@@ -253,7 +276,7 @@ namespace masonry
                 Local3 p = jump, m = jump;
                 p[j] += h;
                 m[j] -= h;
-                dd[j] = (damage(p) - damage(m)) / (2 * h);
+                dd[j] = (damage(p, phi) - damage(m, phi)) / (2 * h) / (1 + a);
               }
             for (unsigned int i = 0; i < 3; ++i)
               if (i > 0 || jump[0] > 0)

@@ -11,6 +11,7 @@
 #include <masonry/core/parameters.h>
 
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/quadrature_point_data.h>
 #include <deal.II/base/utilities.h>
 #include <deal.II/distributed/shared_tria.h>
 #include <deal.II/dofs/dof_handler.h>
@@ -29,12 +30,18 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/numerics/data_out.h>
 
+#include <boost/archive/binary_iarchive.hpp>
+#include <boost/archive/binary_oarchive.hpp>
+#include <boost/serialization/utility.hpp>
+#include <boost/serialization/vector.hpp>
+
 #include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <map>
+#include <random>
 #include <sstream>
 
 namespace masonry
@@ -107,6 +114,8 @@ namespace masonry
         double                  area;
         /** Bricks on both sides. */
         unsigned int brick_a, brick_b;
+        /** Active cell indices on both sides. */
+        unsigned int cell_a, cell_b;
       };
 
       /** Summary of one converged step. */
@@ -115,6 +124,43 @@ namespace masonry
         double       displacement, strain, force, stress, max_damage;
         double       gauge_strain;
         unsigned int newton;
+        /** Cycle (from 1; 0 for the initial state) and whether the platen
+         * was unloading. */
+        unsigned int cycle     = 0;
+        bool         unloading = false;
+        /** Cells deleted so far; largest brick damages (tension,
+         * compression). */
+        unsigned int deleted        = 0;
+        double       brick_damage_t = 0, brick_damage_c = 0;
+
+        template <class Archive>
+        void
+        serialize(Archive &ar, const unsigned int)
+        {
+          ar &displacement &strain &force &stress &max_damage &gauge_strain
+            &newton &cycle &unloading &deleted &brick_damage_t &brick_damage_c;
+        }
+      };
+
+      /** A leg of the displacement protocol. */
+      struct Segment
+      {
+        /** Platen displacement to reach (loading) or the lowest allowed
+         * (unloading), m along the direction. */
+        double       target;
+        bool         unloading;
+        unsigned int cycle;
+      };
+
+      /** Results of one load-unload cycle. */
+      struct Cycle
+      {
+        unsigned int cycle     = 0;
+        double       amplitude = 0, peak_stress = 0, strain_at_peak = 0;
+        double       residual_strain = 0, unloading_modulus = 0;
+        double       dissipated_energy = 0;
+        /** Curve indices: start of loading, turning point, end. */
+        unsigned int first = 0, turn = 0, last = 0;
       };
 
       const char *type_name[3] = {"bed", "head", "collar"};
@@ -172,6 +218,45 @@ namespace masonry
         write_curve(Json &summary);
         void
         write_calculix();
+        /** Platen conditions and the DOFs of deleted cells. */
+        void
+        make_constraints();
+        /** The converged step becomes the old state. */
+        void
+        accept_step();
+        /** Delete cells over the strain threshold; how many. */
+        unsigned int
+        delete_cells();
+        /** Largest brick damages (tension, compression) of the old state. */
+        std::pair<double, double>
+        max_brick_damage() const;
+        /** The legs of the displacement protocol. */
+        std::vector<Segment>
+        make_protocol() const;
+        /** Cycle results from the curve. */
+        std::vector<Cycle>
+        cycle_results() const;
+        /** Append the last curve point to curve.csv. */
+        void
+        append_curve(const bool header);
+        /** Write or read this rank's checkpoint file. */
+        void
+        save_checkpoint(const std::string &status) const;
+        void
+        load_checkpoint();
+
+        /** The protocol's position, stored in checkpoints. */
+        struct Progress
+        {
+          double       applied = 0, increment = 0, time = 0;
+          unsigned int step = 0, easy_steps = 0, segment = 0;
+          template <class Archive>
+          void
+          serialize(Archive &ar, const unsigned int)
+          {
+            ar &applied &increment &time &step &easy_steps &segment;
+          }
+        } progress;
 
         const std::vector<Box>            &boxes;
         const BrickMaterial               &material;
@@ -211,6 +296,27 @@ namespace masonry
         unsigned int total_newton = 0, total_cutbacks = 0;
         unsigned int n_solves         = 0;
         double       seconds_assembly = 0, seconds_solve = 0;
+        /** Brick states at the quadrature points (nonlinear materials). */
+        CellDataStorage<typename Triangulation<3>::cell_iterator, BrickState>
+          states_old, states_new;
+        /** Per active cell: characteristic length, strength factor,
+         * deleted. */
+        std::vector<double> cell_length, cell_factor;
+        std::vector<char>   deleted;
+        /** Per interface: strength factor, deleted. */
+        std::vector<double> face_factor;
+        std::vector<char>   face_deleted;
+        /** DOFs held by the platens. */
+        std::vector<types::global_dof_index> platen_lines;
+        /** DOFs in no remaining cell (held in place). */
+        std::vector<types::global_dof_index> orphans;
+        /** Pseudo-time increment of the step being solved, s. */
+        double       time_step = 0;
+        unsigned int n_deleted = 0;
+        /** Cells evaluated by the material / by their elastic matrix in
+         * the assemblies (work skipped where nothing can change). */
+        unsigned long n_material_cells = 0, n_elastic_cells = 0;
+        unsigned int  n_linear_skips = 0;
       };
 
       void
@@ -357,6 +463,8 @@ namespace masonry
                 face.dofs.resize(24);
                 face.brick_a = a->material_id();
                 face.brick_b = b->material_id();
+                face.cell_a  = a->active_cell_index();
+                face.cell_b  = b->active_cell_index();
                 for (unsigned int v = 0; v < 4; ++v)
                   {
                     face.vertices[v] = a->face(fa)->vertex(v);
@@ -415,8 +523,6 @@ namespace masonry
         find_interfaces();
 
         // Dirichlet conditions of the platens; increments are zero there
-        zero_constraints.clear();
-        zero_constraints.reinit(relevant);
         const double tol      = 1e-9 * height;
         const bool   vertical = std::abs(settings.direction[0]) < 1e-12 &&
                               std::abs(settings.direction[1]) < 1e-12;
@@ -444,12 +550,16 @@ namespace masonry
                             (std::abs(p[0]) < tol ||
                              (d == 1 && std::abs(p[0] - length) < tol)))
                           fix = true;
-                        if (fix && !zero_constraints.is_constrained(i))
-                          zero_constraints.add_line(i);
+                        if (fix)
+                          platen_lines.push_back(i);
                       }
                   }
               }
-        zero_constraints.close();
+        std::sort(platen_lines.begin(), platen_lines.end());
+        platen_lines.erase(std::unique(platen_lines.begin(),
+                                       platen_lines.end()),
+                           platen_lines.end());
+        make_constraints();
         for (const auto &td : top_dofs)
           if (zero_constraints.is_constrained(td.first))
             constrained_top.push_back(td);
@@ -495,10 +605,56 @@ namespace masonry
         f_int.reinit(owned, comm);
         ghosted.reinit(owned, relevant, comm);
 
-        // the bricks are linear: one matrix per cell shape
-        AssertThrow(material.is_linear(),
-                    ExcMessage("only linear brick materials are supported "
-                               "so far"));
+        // per cell: characteristic length, strength factor of its brick;
+        // per joint (brick pair): strength factor
+        const unsigned int n_cells = triangulation.n_active_cells();
+        cell_length.assign(n_cells, 0);
+        cell_factor.assign(n_cells, 1);
+        deleted.assign(n_cells, 0);
+        face_factor.assign(interfaces.size(), 1);
+        face_deleted.assign(interfaces.size(), 0);
+        {
+          std::mt19937                     random(settings.seed);
+          std::normal_distribution<double> normal(0., 1.);
+          auto                             draw = [&]() {
+            const double x = normal(random);
+            return std::clamp(1 + settings.strength_scatter * x, 0.2, 1.8);
+          };
+          std::vector<double> brick_factor(n_bricks, 1);
+          for (auto &f : brick_factor)
+            f = settings.strength_scatter > 0 ? draw() : 1.;
+          std::map<std::pair<unsigned int, unsigned int>, double> joint_factor;
+          for (const auto &face : interfaces)
+            joint_factor[{face.brick_a, face.brick_b}] = 1;
+          for (auto &j : joint_factor)
+            j.second = settings.strength_scatter > 0 ? draw() : 1.;
+          for (unsigned int i = 0; i < interfaces.size(); ++i)
+            face_factor[i] =
+              joint_factor[{interfaces[i].brick_a, interfaces[i].brick_b}];
+          for (const auto &cell : triangulation.active_cell_iterators())
+            {
+              cell_length[cell->active_cell_index()] =
+                std::cbrt(cell->measure());
+              cell_factor[cell->active_cell_index()] =
+                brick_factor[cell->material_id()];
+            }
+        }
+        if (!material.is_linear())
+          for (const auto &cell : triangulation.active_cell_iterators())
+            if (cell->is_locally_owned())
+              {
+                BrickPoint point;
+                point.characteristic_length =
+                  cell_length[cell->active_cell_index()];
+                point.strength_factor = cell_factor[cell->active_cell_index()];
+                material.check_point(point);
+                states_old.initialize(cell, 8);
+                states_new.initialize(cell, 8);
+              }
+
+        // the elastic matrix of every cell, one per cell shape: all cells
+        // of a linear material, the cells of a nonlinear one while they
+        // stay elastic
         const double E      = material.youngs_modulus(),
                      nu     = material.poissons_ratio();
         const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu)),
@@ -555,29 +711,109 @@ namespace masonry
           matrix = 0;
         std::vector<types::global_dof_index> dofs(24);
         Vector<double>                       ue(24), fe_local(24);
+        FullMatrix<double>                   ke(24, 24);
+        const bool                           linear = material.is_linear();
+        QGauss<3>                            quadrature(2);
+        FEValues<3>                          fe_values(fe,
+                              quadrature,
+                              update_gradients | update_JxW_values);
+        const FEValuesExtractors::Vector     displacement(0);
+        std::array<SymmetricTensor<2, 3>, 8> strain;
+        std::vector<SymmetricTensor<2, 3>>   B(24);
+        SymmetricTensor<2, 3>                stress;
+        SymmetricTensor<4, 3>                C;
         for (const auto &cell : dof_handler.active_cell_iterators())
-          if (cell->is_locally_owned())
+          if (cell->is_locally_owned() && !deleted[cell->active_cell_index()])
             {
+              const unsigned int c = cell->active_cell_index();
               cell->get_dof_indices(dofs);
               for (unsigned int i = 0; i < 24; ++i)
                 ue[i] = ghosted[dofs[i]];
-              const FullMatrix<double> &k =
-                *matrix_of_cell[cell->active_cell_index()];
-              k.vmult(fe_local, ue);
+              bool                                     elastic = linear;
+              std::vector<std::shared_ptr<BrickState>> old, updated;
+              BrickPoint                               point;
+              if (!linear)
+                {
+                  point.characteristic_length = cell_length[c];
+                  point.strength_factor       = cell_factor[c];
+                  point.time_step             = time_step;
+                  old                         = states_old.get_data(cell);
+                  updated                     = states_new.get_data(cell);
+                  fe_values.reinit(cell);
+                  elastic = true;
+                  for (unsigned int q = 0; q < 8; ++q)
+                    {
+                      strain[q] = 0;
+                      for (unsigned int i = 0; i < 24; ++i)
+                        strain[q] +=
+                          ue[i] *
+                          fe_values[displacement].symmetric_gradient(i, q);
+                      if (elastic &&
+                          !material.is_elastic(strain[q], *old[q], point))
+                        elastic = false;
+                    }
+                }
+              if (elastic)
+                {
+                  // the response cannot differ from the cached elastic one
+                  const FullMatrix<double> &k = *matrix_of_cell[c];
+                  k.vmult(fe_local, ue);
+                  f_int.add(dofs, fe_local);
+                  if (with_matrix)
+                    zero_constraints.distribute_local_to_global(k,
+                                                                dofs,
+                                                                matrix);
+                  if (!linear)
+                    {
+                      for (unsigned int q = 0; q < 8; ++q)
+                        *updated[q] = *old[q];
+                      ++n_elastic_cells;
+                    }
+                  continue;
+                }
+              ++n_material_cells;
+              fe_local = 0;
+              if (with_matrix)
+                ke = 0;
+              for (unsigned int q = 0; q < 8; ++q)
+                {
+                  material.evaluate(
+                    strain[q], *old[q], point, *updated[q], stress, C);
+                  const double JxW = fe_values.JxW(q);
+                  for (unsigned int i = 0; i < 24; ++i)
+                    B[i] = fe_values[displacement].symmetric_gradient(i, q);
+                  for (unsigned int i = 0; i < 24; ++i)
+                    {
+                      fe_local[i] += (stress * B[i]) * JxW;
+                      if (with_matrix)
+                        {
+                          const SymmetricTensor<2, 3> BC = B[i] * C;
+                          for (unsigned int j = 0; j < 24; ++j)
+                            ke(i, j) += (BC * B[j]) * JxW;
+                        }
+                    }
+                }
+              for (unsigned int i = 0; i < 24; ++i)
+                AssertThrow(std::isfinite(fe_local[i]),
+                            ExcMessage("the brick material returned a "
+                                       "stress that is not a number"));
               f_int.add(dofs, fe_local);
               if (with_matrix)
-                zero_constraints.distribute_local_to_global(k, dofs, matrix);
+                zero_constraints.distribute_local_to_global(ke, dofs, matrix);
             }
 
         FullMatrix<double> ki(24, 24);
         Vector<double>     fi(24);
+        InterfacePoint     point;
+        point.time_step = time_step;
         for (unsigned int n = 0; n < interfaces.size(); ++n)
           {
             const auto &face = interfaces[n];
-            if (!face.owned)
+            if (!face.owned || face_deleted[n])
               continue;
-            ki = 0;
-            fi = 0;
+            point.strength_factor = face_factor[n];
+            ki                    = 0;
+            fi                    = 0;
             for (unsigned int i = 0; i < 24; ++i)
               ue[i] = ghosted[face.dofs[i]];
             const unsigned int a = face.axis;
@@ -602,6 +838,7 @@ namespace masonry
                   Local33 D;
                   law.evaluate(jump,
                                history_old[n * n_quad + q],
+                               point,
                                history_new[n * n_quad + q],
                                t,
                                D);
@@ -631,7 +868,20 @@ namespace masonry
           }
         f_int.compress(VectorOperation::add);
         if (with_matrix)
-          matrix.compress(VectorOperation::add);
+          {
+            matrix.compress(VectorOperation::add);
+            // DOFs of deleted cells belong to no element: a unit diagonal
+            // keeps the matrix regular (their increments are constrained)
+            if (!orphans.empty())
+              {
+                const double scale =
+                  material.youngs_modulus() * mesh_spacing(settings)[0];
+                for (const auto i : orphans)
+                  if (owned.is_element(i))
+                    matrix.set(i, i, scale);
+                matrix.compress(VectorOperation::insert);
+              }
+          }
         seconds_assembly +=
           std::chrono::duration<double>(Clock::now() - start).count();
       }
@@ -717,66 +967,76 @@ namespace masonry
         TrilinosWrappers::MPI::Vector r(owned, comm), du(owned, comm),
           u_start(owned, comm);
         double norm0 = 0;
-        for (iterations = 0; iterations <= settings.max_newton; ++iterations)
+        // a material or solver failure inside the iteration counts as no
+        // convergence: the caller cuts the step back
+        try
           {
-            assemble(true);
-            r = f_int;
-            r *= -1;
-            zero_constraints.set_zero(r);
-            const double norm = r.l2_norm();
-            const double all  = f_int.l2_norm();
-            if (!std::isfinite(norm) || !std::isfinite(all))
-              return false;
-            // scale: the platen reactions, or the elastic force of the
-            // whole applied displacement when nothing is loaded
-            const double scale =
-              std::max(std::sqrt(std::max(all * all - norm * norm, 0.)),
-                       1e-6 * material.youngs_modulus() * gross_area *
-                         std::abs(settings.target_displacement) / height);
-            if (norm <= settings.newton_tolerance * scale)
-              return true;
-            if (iterations == settings.max_newton)
-              return false;
-            norm0 = norm;
-            du    = 0;
-            try
+            for (iterations = 0; iterations <= settings.max_newton;
+                 ++iterations)
               {
-                solve_linear(du, r);
-              }
-            catch (const std::exception &)
-              {
-                return false;
-              }
-            zero_constraints.set_zero(du);
-            u_start = u;
-            u.add(1., du);
-            if (settings.line_search)
-              {
-                // backtracking on the residual norm
-                double alpha = 1, best_alpha = 1, best = 0;
-                for (unsigned int k = 0; k < 6; ++k)
+                assemble(true);
+                r = f_int;
+                r *= -1;
+                zero_constraints.set_zero(r);
+                const double norm = r.l2_norm();
+                const double all  = f_int.l2_norm();
+                if (!std::isfinite(norm) || !std::isfinite(all))
+                  return false;
+                // scale: the platen reactions, or the elastic force of the
+                // whole applied displacement when nothing is loaded
+                const double scale =
+                  std::max(std::sqrt(std::max(all * all - norm * norm, 0.)),
+                           1e-6 * material.youngs_modulus() * gross_area *
+                             std::abs(settings.target_displacement) / height);
+                if (norm <= settings.newton_tolerance * scale)
+                  return true;
+                if (iterations == settings.max_newton)
+                  return false;
+                norm0 = norm;
+                du    = 0;
+                try
                   {
-                    assemble(false);
-                    r = f_int;
-                    zero_constraints.set_zero(r);
-                    const double n = r.l2_norm();
-                    if (k == 0 || (std::isfinite(n) && n < best))
+                    solve_linear(du, r);
+                  }
+                catch (const std::exception &)
+                  {
+                    return false;
+                  }
+                zero_constraints.set_zero(du);
+                u_start = u;
+                u.add(1., du);
+                if (settings.line_search)
+                  {
+                    // backtracking on the residual norm
+                    double alpha = 1, best_alpha = 1, best = 0;
+                    for (unsigned int k = 0; k < 6; ++k)
                       {
-                        best       = n;
-                        best_alpha = alpha;
+                        assemble(false);
+                        r = f_int;
+                        zero_constraints.set_zero(r);
+                        const double n = r.l2_norm();
+                        if (k == 0 || (std::isfinite(n) && n < best))
+                          {
+                            best       = n;
+                            best_alpha = alpha;
+                          }
+                        if (std::isfinite(n) && n < (1 - 1e-4 * alpha) * norm0)
+                          break;
+                        alpha /= 2;
+                        u = u_start;
+                        u.add(alpha, du);
                       }
-                    if (std::isfinite(n) && n < (1 - 1e-4 * alpha) * norm0)
-                      break;
-                    alpha /= 2;
-                    u = u_start;
-                    u.add(alpha, du);
-                  }
-                if (alpha != best_alpha)
-                  {
-                    u = u_start;
-                    u.add(best_alpha, du);
+                    if (alpha != best_alpha)
+                      {
+                        u = u_start;
+                        u.add(best_alpha, du);
+                      }
                   }
               }
+          }
+        catch (const std::exception &)
+          {
+            return false;
           }
         return false;
       }
@@ -797,32 +1057,56 @@ namespace masonry
                                  names,
                                  DataOut<3>::type_dof_data,
                                  interpretation);
-        // stress at the cell centres (Pa)
-        const double E                     = material.youngs_modulus(),
-                     nu                    = material.poissons_ratio();
-        const double lambda                = E * nu / ((1 + nu) * (1 - 2 * nu)),
-                     mu                    = E / (2 * (1 + nu));
+        // stress (Pa), damage and plastic strain averaged over the cell's
+        // quadrature points, from the converged states
         const unsigned int         n_cells = triangulation.n_active_cells();
         std::vector<Vector<float>> stress(6, Vector<float>(n_cells));
-        Vector<float>              subdomain(n_cells);
-        QMidpoint<3>               midpoint;
-        FEValues<3>                fe_values(fe, midpoint, update_gradients);
-        std::vector<Tensor<2, 3>>  grad(1);
-        const FEValuesExtractors::Vector displacement(0);
+        Vector<float> subdomain(n_cells), damage_t(n_cells), damage_c(n_cells),
+          plastic(n_cells), removed(n_cells);
+        QGauss<3>   quadrature(2);
+        FEValues<3> fe_values(fe, quadrature, update_gradients);
+        std::vector<SymmetricTensor<2, 3>> eps(8);
+        const FEValuesExtractors::Vector   displacement(0);
+        const bool                         linear = material.is_linear();
         for (const auto &cell : dof_handler.active_cell_iterators())
           if (cell->is_locally_owned())
             {
+              const unsigned int c = cell->active_cell_index();
+              subdomain[c]         = cell->subdomain_id();
+              removed[c]           = deleted[c];
+              if (deleted[c])
+                continue;
               fe_values.reinit(cell);
-              fe_values[displacement].get_function_gradients(ghosted, grad);
-              const Tensor<2, 3> eps = 0.5 * (grad[0] + transpose(grad[0]));
-              const double       tr  = trace(eps);
-              const unsigned int c   = cell->active_cell_index();
+              fe_values[displacement].get_function_symmetric_gradients(ghosted,
+                                                                       eps);
+              BrickPoint point;
+              point.characteristic_length = cell_length[c];
+              point.strength_factor       = cell_factor[c];
+              SymmetricTensor<2, 3> sigma, mean;
+              SymmetricTensor<4, 3> C;
+              BrickState            scratch;
+              for (unsigned int q = 0; q < 8; ++q)
+                {
+                  if (linear)
+                    material.evaluate(
+                      eps[q], BrickState(), point, scratch, sigma, C);
+                  else
+                    {
+                      // from the converged state at the converged strain:
+                      // no further loading, the stress of the step
+                      const auto old = states_old.get_data(cell);
+                      material.evaluate(
+                        eps[q], *old[q], point, scratch, sigma, C);
+                      damage_t[c] += old[q]->damage_t / 8;
+                      damage_c[c] += old[q]->damage_c / 8;
+                      plastic[c] += old[q]->plastic_strain.norm() / 8;
+                    }
+                  mean += sigma / 8;
+                }
               const unsigned int ij[6][2] = {
                 {0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {0, 2}};
               for (unsigned int k = 0; k < 6; ++k)
-                stress[k][c] =
-                  2 * mu * eps[ij[k][0]][ij[k][1]] + (k < 3 ? lambda * tr : 0.);
-              subdomain[c] = cell->subdomain_id();
+                stress[k][c] = mean[ij[k][0]][ij[k][1]];
             }
         const char *stress_names[6] = {"stress_xx",
                                        "stress_yy",
@@ -833,6 +1117,14 @@ namespace masonry
         for (unsigned int k = 0; k < 6; ++k)
           data_out.add_data_vector(stress[k], stress_names[k]);
         data_out.add_data_vector(subdomain, "subdomain");
+        if (!linear)
+          {
+            data_out.add_data_vector(damage_t, "damage_tension");
+            data_out.add_data_vector(damage_c, "damage_compression");
+            data_out.add_data_vector(plastic, "plastic_strain_norm");
+          }
+        if (settings.deletion_strain > 0)
+          data_out.add_data_vector(removed, "deleted");
         data_out.build_patches();
         const std::string dir = context.output.path();
         const std::string pvtu =
@@ -937,47 +1229,154 @@ namespace masonry
       void
       Model::write_curve(Json &summary)
       {
-        const std::string csv = context.output.file("curve.csv");
-        if (Utilities::MPI::this_mpi_process(comm) == 0)
+        // curve.csv was written step by step (append_curve)
+        context.output.file("curve.csv");
+        const std::vector<Cycle> cycles = cycle_results();
+        const bool               cyclic = !settings.cycle_amplitudes.empty();
+        const double      modulus = curve.size() > 1 && curve[1].strain != 0 ?
+                                      curve[1].stress / curve[1].strain :
+                                      0.;
+        const std::string cycles_csv = context.output.path() + "/cycles.csv";
+        if (cyclic)
           {
-            std::ofstream out(csv);
-            out << std::setprecision(12);
-            out << "step,displacement_m,strain,force_N,stress_Pa,"
-                   "newton_iterations,max_damage,gauge_strain\n";
-            for (unsigned int i = 0; i < curve.size(); ++i)
-              out << i << "," << curve[i].displacement << "," << curve[i].strain
-                  << "," << curve[i].force << "," << curve[i].stress << ","
-                  << curve[i].newton << "," << curve[i].max_damage << ","
-                  << curve[i].gauge_strain << "\n";
+            context.output.file("cycles.csv");
+            if (Utilities::MPI::this_mpi_process(comm) == 0)
+              {
+                std::ofstream out(cycles_csv);
+                out << std::setprecision(12);
+                out << "cycle,amplitude_strain,peak_stress_Pa,strain_at_peak,"
+                       "residual_strain,unloading_modulus_Pa,"
+                       "stiffness_ratio,dissipated_energy_J_per_m3\n";
+                for (const auto &c : cycles)
+                  out << c.cycle << "," << c.amplitude << "," << c.peak_stress
+                      << "," << c.strain_at_peak << "," << c.residual_strain
+                      << "," << c.unloading_modulus << ","
+                      << (modulus > 0 ? c.unloading_modulus / modulus : 0.)
+                      << "," << c.dissipated_energy << "\n";
+              }
+            // envelope (first cycle at each amplitude), stability point
+            // (last cycle) and common point (where the reloading of the
+            // next cycle at the same amplitude meets the unloading of the
+            // previous one)
+            const unsigned int n_rep    = settings.cycles_per_amplitude;
+            Json               envelope = Json::array();
+            if (Utilities::MPI::this_mpi_process(comm) == 0)
+              {
+                std::ofstream out(context.output.path() + "/envelope.csv");
+                out << std::setprecision(12)
+                    << "amplitude_strain,envelope_strain,envelope_stress_Pa,"
+                       "common_point_stress_Pa,stability_point_stress_Pa\n";
+                for (unsigned int k = 0; k * n_rep < cycles.size(); ++k)
+                  {
+                    const Cycle &first = cycles[k * n_rep];
+                    const Cycle &lastc =
+                      cycles[std::min<std::size_t>((k + 1) * n_rep,
+                                                   cycles.size()) -
+                             1];
+                    double common = 0;
+                    if (n_rep > 1 && k * n_rep + 1 < cycles.size())
+                      {
+                        // reloading branch of the 2nd cycle against the
+                        // unloading branch of the 1st, both as stress over
+                        // strain: the highest stress where the reloading
+                        // line reaches the unloading line
+                        const Cycle &second       = cycles[k * n_rep + 1];
+                        auto         on_unloading = [&](const double e) {
+                          for (unsigned int i = first.turn + 1; i <= first.last;
+                               ++i)
+                            {
+                              const auto &a = curve[i - 1], &b = curve[i];
+                              if ((e - a.strain) * (e - b.strain) <= 0 &&
+                                  a.strain != b.strain)
+                                return a.stress + (b.stress - a.stress) *
+                                                    (e - a.strain) /
+                                                    (b.strain - a.strain);
+                            }
+                          return std::numeric_limits<double>::quiet_NaN();
+                        };
+                        // from the top of the reloading down to the first
+                        // point on or under the unloading line
+                        for (unsigned int i = second.turn; i > second.first;
+                             --i)
+                          {
+                            const double g = on_unloading(curve[i].strain);
+                            if (std::isfinite(g) &&
+                                curve[i].stress <=
+                                  g + 1e-9 * std::abs(first.peak_stress))
+                              {
+                                common = curve[i].stress;
+                                break;
+                              }
+                          }
+                      }
+                    out << first.amplitude << "," << first.strain_at_peak << ","
+                        << first.peak_stress << "," << common << ","
+                        << lastc.peak_stress << "\n";
+                  }
+              }
+            context.output.file("envelope.csv");
+            Json list = Json::array();
+            for (const auto &c : cycles)
+              {
+                Json j;
+                j["cycle"]             = c.cycle;
+                j["amplitude_strain"]  = c.amplitude;
+                j["peak_stress"]       = c.peak_stress;
+                j["residual_strain"]   = c.residual_strain;
+                j["unloading_modulus"] = c.unloading_modulus;
+                j["dissipated_energy"] = c.dissipated_energy;
+                list.push_back(j);
+              }
+            summary["cycles"] = list;
           }
         if (settings.write_plot)
           {
             const std::string png = context.output.file("curve.png");
+            if (cyclic)
+              context.output.file("degradation.png");
             if (Utilities::MPI::this_mpi_process(comm) == 0)
               {
                 const std::string script =
-                  context.output.path() + ".curve_plot.py";
+                  context.output.path() + "/.curve_plot.py";
                 std::ofstream py(script);
                 py << "import matplotlib\nmatplotlib.use('Agg')\n"
-                      "import matplotlib.pyplot as plt\nimport csv\n"
-                      "rows = list(csv.DictReader(open('"
-                   << csv
-                   << "')))\n"
+                      "import matplotlib.pyplot as plt\nimport csv, os\n"
+                      "d = '"
+                   << context.output.path()
+                   << "'\n"
+                      "rows = list(csv.DictReader(open(d + '/curve.csv')))\n"
                       "e = [1e3*float(r['strain']) for r in rows]\n"
                       "s = [1e-6*float(r['stress_Pa']) for r in rows]\n"
                       "plt.figure(figsize=(6,4.5))\n"
-                      "plt.plot(e, s, 'o-', ms=3)\n"
+                      "plt.plot(e, s, '-', lw=1, marker='o' if len(e) < 80 "
+                      "else None, ms=3)\n"
+                      "if os.path.exists(d + '/cycles.csv'):\n"
+                      "    c = list(csv.DictReader(open(d + '/cycles.csv')))\n"
+                      "    plt.plot([1e3*float(r['strain_at_peak']) for r in "
+                      "c], [1e-6*float(r['peak_stress_Pa']) for r in c], "
+                      "'k^', ms=4, label='cycle peaks')\n"
+                      "    plt.legend()\n"
                       "plt.xlabel('strain along the platen motion (1e-3)')\n"
                       "plt.ylabel('stress = force / gross area (MPa)')\n"
                       "plt.grid(alpha=0.3)\nplt.tight_layout()\n"
                       "plt.savefig('"
-                   << png << "', dpi=120)\n";
+                   << png
+                   << "', dpi=120)\n"
+                      "if os.path.exists(d + '/cycles.csv'):\n"
+                      "    plt.figure(figsize=(6,4.5))\n"
+                      "    plt.plot([1e3*float(r['strain_at_peak']) for r in "
+                      "c], [float(r['stiffness_ratio']) for r in c], 'o-')\n"
+                      "    plt.xlabel('strain at the cycle peak (1e-3)')\n"
+                      "    plt.ylabel('unloading modulus / initial modulus')\n"
+                      "    plt.ylim(0, 1.05)\n    plt.grid(alpha=0.3)\n"
+                      "    plt.tight_layout()\n"
+                      "    plt.savefig(d + '/degradation.png', dpi=120)\n";
                 py.close();
                 const int rc = std::system(
                   ("/usr/bin/python3 " + script + " >/dev/null 2>&1").c_str());
                 std::filesystem::remove(script);
                 if (rc != 0)
-                  pcout << "Warning: the plot curve.png could not be drawn "
+                  pcout << "Warning: the plots could not be drawn "
                            "(needs /usr/bin/python3 with matplotlib)\n";
               }
           }
@@ -992,10 +1391,9 @@ namespace masonry
         for (unsigned int i = 1; i < curve.size(); ++i)
           work += 0.5 * (curve[i].force + curve[i - 1].force) *
                   (curve[i].displacement - curve[i - 1].displacement);
-        summary["peak_stress"]    = curve.size() > 1 ? peak : 0.;
-        summary["strain_at_peak"] = strain_at_peak;
-        summary["initial_modulus"] =
-          curve.size() > 1 ? curve[1].stress / curve[1].strain : 0.;
+        summary["peak_stress"]     = curve.size() > 1 ? peak : 0.;
+        summary["strain_at_peak"]  = strain_at_peak;
+        summary["initial_modulus"] = modulus;
         if (gauge_span > 0)
           {
             summary["gauge_length"] = gauge_span;
@@ -1003,14 +1401,21 @@ namespace masonry
               if (p.stress == peak)
                 summary["gauge_strain_at_peak"] = p.gauge_strain;
             summary["initial_modulus_gauge"] =
-              curve.size() > 1 ? curve[1].stress / curve[1].gauge_strain : 0.;
+              curve.size() > 1 && curve[1].gauge_strain != 0 ?
+                curve[1].stress / curve[1].gauge_strain :
+                0.;
           }
         summary["final_stress"]  = curve.back().stress;
         summary["final_strain"]  = curve.back().strain;
         summary["external_work"] = work;
         summary["max_damage"]    = curve.back().max_damage;
+        if (!material.is_linear())
+          {
+            summary["max_brick_damage_tension"] = curve.back().brick_damage_t;
+            summary["max_brick_damage_compression"] =
+              curve.back().brick_damage_c;
+          }
       }
-
 
       void
       Model::write_calculix()
@@ -1092,6 +1497,303 @@ namespace masonry
       }
 
       void
+      Model::make_constraints()
+      {
+        zero_constraints.clear();
+        zero_constraints.reinit(relevant);
+        for (const auto i : platen_lines)
+          zero_constraints.add_line(i);
+        for (const auto i : orphans)
+          if (!zero_constraints.is_constrained(i))
+            zero_constraints.add_line(i);
+        zero_constraints.close();
+      }
+
+      void
+      Model::accept_step()
+      {
+        history_old = history_new;
+        if (!material.is_linear())
+          for (const auto &cell : triangulation.active_cell_iterators())
+            if (cell->is_locally_owned() && !deleted[cell->active_cell_index()])
+              {
+                const auto old     = states_old.get_data(cell);
+                const auto updated = states_new.get_data(cell);
+                for (unsigned int q = 0; q < 8; ++q)
+                  *old[q] = *updated[q];
+              }
+      }
+
+      std::pair<double, double>
+      Model::max_brick_damage() const
+      {
+        double dt = 0, dc = 0;
+        if (!material.is_linear())
+          for (const auto &cell : triangulation.active_cell_iterators())
+            if (cell->is_locally_owned() && !deleted[cell->active_cell_index()])
+              for (const auto &state : states_old.get_data(cell))
+                {
+                  dt = std::max(dt, state->damage_t);
+                  dc = std::max(dc, state->damage_c);
+                }
+        return {Utilities::MPI::max(dt, comm), Utilities::MPI::max(dc, comm)};
+      }
+
+      unsigned int
+      Model::delete_cells()
+      {
+        if (settings.deletion_strain <= 0)
+          return 0;
+        // maximum principal strain of the cell-averaged strain
+        ghosted = u;
+        QGauss<3>                                    quadrature(2);
+        FEValues<3>                                  fe_values(fe,
+                              quadrature,
+                              update_gradients | update_JxW_values);
+        std::vector<SymmetricTensor<2, 3>>           eps(8);
+        const FEValuesExtractors::Vector             displacement(0);
+        std::vector<std::pair<double, unsigned int>> candidates;
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned() && !deleted[cell->active_cell_index()])
+            {
+              fe_values.reinit(cell);
+              fe_values[displacement].get_function_symmetric_gradients(ghosted,
+                                                                       eps);
+              SymmetricTensor<2, 3> mean;
+              double                volume = 0;
+              for (unsigned int q = 0; q < 8; ++q)
+                {
+                  mean += eps[q] * fe_values.JxW(q);
+                  volume += fe_values.JxW(q);
+                }
+              mean /= volume;
+              const double e1 = eigenvalues(mean)[0];
+              if (e1 > settings.deletion_strain)
+                candidates.emplace_back(e1, cell->active_cell_index());
+            }
+        // the same decision on every rank: largest strains first, capped
+        std::vector<std::pair<double, unsigned int>> all;
+        for (const auto &part : Utilities::MPI::all_gather(comm, candidates))
+          all.insert(all.end(), part.begin(), part.end());
+        std::sort(all.begin(), all.end(), [](const auto &a, const auto &b) {
+          return a.first > b.first ||
+                 (a.first == b.first && a.second < b.second);
+        });
+        if (all.size() > settings.max_deletions)
+          all.resize(settings.max_deletions);
+        if (all.empty())
+          return 0;
+        for (const auto &c : all)
+          deleted[c.second] = 1;
+        n_deleted += all.size();
+        // joints at a deleted cell go with it
+        for (unsigned int i = 0; i < interfaces.size(); ++i)
+          if (deleted[interfaces[i].cell_a] || deleted[interfaces[i].cell_b])
+            face_deleted[i] = 1;
+        // DOFs that no remaining cell holds stay where they are
+        std::vector<char>                    used(dof_handler.n_dofs(), 0);
+        std::vector<types::global_dof_index> dofs(24);
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (!deleted[cell->active_cell_index()])
+            {
+              cell->get_dof_indices(dofs);
+              for (const auto i : dofs)
+                used[i] = 1;
+            }
+        orphans.clear();
+        for (types::global_dof_index i = 0; i < used.size(); ++i)
+          if (!used[i])
+            orphans.push_back(i);
+        make_constraints();
+        return all.size();
+      }
+
+      std::vector<Segment>
+      Model::make_protocol() const
+      {
+        std::vector<Segment> legs;
+        if (settings.cycle_amplitudes.empty())
+          legs.push_back({settings.target_displacement, false, 1});
+        else
+          {
+            unsigned int cycle = 0;
+            for (const double a : settings.cycle_amplitudes)
+              for (unsigned int r = 0; r < settings.cycles_per_amplitude; ++r)
+                {
+                  ++cycle;
+                  legs.push_back({a, false, cycle});
+                  legs.push_back({0., true, cycle});
+                }
+          }
+        return legs;
+      }
+
+      std::vector<Cycle>
+      Model::cycle_results() const
+      {
+        std::vector<Cycle> cycles;
+        for (unsigned int i = 1; i < curve.size(); ++i)
+          {
+            const CurvePoint &p = curve[i];
+            if (cycles.empty() || cycles.back().cycle != p.cycle)
+              {
+                Cycle c;
+                c.cycle = p.cycle;
+                c.first = c.turn = i - 1;
+                c.amplitude =
+                  settings.cycle_amplitudes.empty() ?
+                    settings.target_displacement / height :
+                    settings.cycle_amplitudes[(p.cycle - 1) /
+                                              settings.cycles_per_amplitude] /
+                      height;
+                cycles.push_back(c);
+              }
+            Cycle &c = cycles.back();
+            c.last   = i;
+            if (!p.unloading)
+              c.turn = i;
+            if (p.stress > c.peak_stress || c.first + 1 == i)
+              {
+                c.peak_stress    = p.stress;
+                c.strain_at_peak = p.strain;
+              }
+          }
+        for (auto &c : cycles)
+          {
+            const CurvePoint &turn = curve[c.turn], &end = curve[c.last];
+            c.residual_strain = end.strain;
+            c.unloading_modulus =
+              c.last > c.turn && turn.strain != end.strain ?
+                (turn.stress - end.stress) / (turn.strain - end.strain) :
+                0.;
+            // the loop's area: work per unit volume done on the wallette
+            // from the start of the cycle to its end
+            for (unsigned int i = c.first + 1; i <= c.last; ++i)
+              c.dissipated_energy += 0.5 *
+                                     (curve[i].stress + curve[i - 1].stress) *
+                                     (curve[i].strain - curve[i - 1].strain);
+          }
+        return cycles;
+      }
+
+      void
+      Model::append_curve(const bool header)
+      {
+        if (Utilities::MPI::this_mpi_process(comm) != 0)
+          return;
+        std::ofstream out(context.output.path() + "/curve.csv",
+                          header ? std::ios::trunc : std::ios::app);
+        out << std::setprecision(12);
+        if (header)
+          out << "step,displacement_m,strain,force_N,stress_Pa,"
+                 "newton_iterations,max_damage,gauge_strain,cycle,unloading,"
+                 "deleted_cells,brick_damage_tension,"
+                 "brick_damage_compression\n";
+        const unsigned int i = curve.size() - 1;
+        const CurvePoint  &p = curve[i];
+        out << i << "," << p.displacement << "," << p.strain << "," << p.force
+            << "," << p.stress << "," << p.newton << "," << p.max_damage << ","
+            << p.gauge_strain << "," << p.cycle << "," << p.unloading << ","
+            << p.deleted << "," << p.brick_damage_t << "," << p.brick_damage_c
+            << "\n";
+      }
+
+      void
+      Model::save_checkpoint(const std::string &status) const
+      {
+        const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
+        const std::string  name =
+          context.output.path() + "/checkpoint." + std::to_string(rank);
+        {
+          std::ofstream                   out(name + ".tmp", std::ios::binary);
+          boost::archive::binary_oarchive ar(out);
+          const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+          const types::global_dof_index n_dofs = dof_handler.n_dofs();
+          ar &n_ranks                  &n_dofs;
+          ar &progress &curve &total_newton &total_cutbacks &n_solves &n_deleted
+            &deleted &face_deleted &orphans                      &history_old;
+          std::vector<std::pair<types::global_dof_index, double>> values;
+          for (const auto i : owned)
+            values.emplace_back(i, u[i]);
+          ar                     &values;
+          std::vector<BrickState> states;
+          if (!material.is_linear())
+            for (const auto &cell : triangulation.active_cell_iterators())
+              if (cell->is_locally_owned())
+                for (const auto &state : states_old.get_data(cell))
+                  states.push_back(*state);
+          ar         &states;
+          std::string s = status;
+          ar         &s;
+        }
+        // replace the old checkpoint only once the new one is complete
+        std::filesystem::rename(name + ".tmp", name);
+        context.output.file("checkpoint." + std::to_string(rank));
+      }
+
+      void
+      Model::load_checkpoint()
+      {
+        const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
+        const std::string  name =
+          context.output.path() + "/checkpoint." + std::to_string(rank);
+        std::ifstream in(name, std::ios::binary);
+        AssertThrow(in,
+                    ExcParameter("Resume",
+                                 "no checkpoint " + name +
+                                   " (run with `Checkpoint interval' or "
+                                   "`Maximum steps' first, with the same "
+                                   "output directory and number of ranks)"));
+        try
+          {
+            boost::archive::binary_iarchive ar(in);
+            unsigned int                    n_ranks;
+            types::global_dof_index         n_dofs;
+            ar &n_ranks                    &n_dofs;
+            AssertThrow(n_ranks == Utilities::MPI::n_mpi_processes(comm) &&
+                          n_dofs == dof_handler.n_dofs(),
+                        ExcParameter("Resume",
+                                     "the checkpoint was written by a run "
+                                     "with " +
+                                       std::to_string(n_ranks) + " ranks and " +
+                                       std::to_string(n_dofs) +
+                                       " DOFs; resume with the same "
+                                       "parameters and number of ranks"));
+            ar &progress &curve &total_newton &total_cutbacks &n_solves
+              &n_deleted &deleted &face_deleted &orphans &history_old;
+            history_new = history_old;
+            std::vector<std::pair<types::global_dof_index, double>> values;
+            ar                                                     &values;
+            for (const auto &v : values)
+              u[v.first] = v.second;
+            u.compress(VectorOperation::insert);
+            std::vector<BrickState> states;
+            ar                     &states;
+            unsigned int            k = 0;
+            if (!material.is_linear())
+              for (const auto &cell : triangulation.active_cell_iterators())
+                if (cell->is_locally_owned())
+                  {
+                    const auto old = states_old.get_data(cell);
+                    const auto upd = states_new.get_data(cell);
+                    for (unsigned int q = 0; q < 8; ++q)
+                      {
+                        AssertThrow(k < states.size(), ExcInternalError());
+                        *old[q] = *upd[q] = states[k++];
+                      }
+                  }
+          }
+        catch (const boost::archive::archive_exception &e)
+          {
+            AssertThrow(false,
+                        ExcParameter("Resume",
+                                     "the checkpoint " + name +
+                                       " cannot be read (" + e.what() + ")"));
+          }
+        make_constraints();
+      }
+
+      void
       Model::run()
       {
         const auto start = Clock::now();
@@ -1122,26 +1824,103 @@ namespace masonry
               << ", collar " << n_joints_of_type[2] << " / "
               << n_faces_of_type[2] << "\n";
 
-        curve.push_back({0, 0, 0, 0, 0, 0, 0});
-        write_vtu(0, 0);
-        const double target  = settings.target_displacement;
-        const double nominal = target / settings.n_steps;
-        double       applied = 0, increment = nominal;
-        unsigned int consecutive_cutbacks = 0, step = 0, easy_steps = 0;
+        const std::vector<Segment> legs = make_protocol();
+        const double               nominal =
+          std::abs(settings.target_displacement / settings.n_steps);
+        progress.increment = nominal;
+        if (settings.resume)
+          {
+            load_checkpoint();
+            pcout << "Resumed from the checkpoint at step " << progress.step
+                  << " (platen displacement " << progress.applied << " m)\n";
+            append_curve(true);
+            const std::vector<CurvePoint> all = curve;
+            curve.clear();
+            for (const auto &p : all)
+              {
+                curve.push_back(p);
+                if (curve.size() > 1)
+                  append_curve(false);
+              }
+          }
+        else
+          {
+            curve.push_back({0, 0, 0, 0, 0, 0, 0});
+            append_curve(true);
+            write_vtu(0, 0);
+          }
+        if (!legs.empty() && legs.size() > 1)
+          pcout << "Protocol: " << legs.size() / 2
+                << " load-unload cycles, unloading to "
+                << settings.unloading_stress * 1e-6 << " MPa\n";
+
+        unsigned int consecutive_cutbacks = 0, steps_this_run = 0;
         std::string  status = "completed", message;
         TrilinosWrappers::MPI::Vector u_converged(u);
-        while (std::abs(applied) < std::abs(target) * (1 - 1e-12))
+        // along the direction: positive displacement is the loading sense
+        while (progress.segment < legs.size())
           {
-            double next = applied + increment;
-            if (std::abs(next) > std::abs(target) * (1 - 1e-9))
-              next = target;
+            const Segment &leg       = legs[progress.segment];
+            double        &applied   = progress.applied;
+            double        &increment = progress.increment;
+            // the next platen position of this leg, or the end of the leg
+            double next;
+            if (!leg.unloading)
+              {
+                if (applied >= leg.target * (1 - 1e-12))
+                  {
+                    ++progress.segment;
+                    continue;
+                  }
+                next = applied + increment;
+                if (next > leg.target * (1 - 1e-9))
+                  next = leg.target;
+              }
+            else
+              {
+                const CurvePoint &last = curve.back();
+                // (the aimed last step may land a round-off above)
+                if (last.stress <= settings.unloading_stress +
+                                     1e-6 * std::abs(curve[1].stress) ||
+                    applied <= leg.target + 1e-9 * nominal)
+                  {
+                    ++progress.segment;
+                    increment = nominal;
+                    continue;
+                  }
+                next = applied - increment;
+                // aim at the unloading stress with the slope of the last
+                // unloading step (elastic unloading is linear)
+                const CurvePoint &before = curve[curve.size() - 2];
+                if (last.unloading && last.displacement < before.displacement)
+                  {
+                    const double slope =
+                      (before.stress - last.stress) /
+                      (before.displacement - last.displacement);
+                    if (slope > 0)
+                      {
+                        const double aim =
+                          applied -
+                          (last.stress - settings.unloading_stress) / slope;
+                        if (aim > next - 1e-12 * nominal)
+                          next = aim;
+                      }
+                  }
+                next = std::max(next, leg.target);
+                if (applied - next < 1e-9 * nominal)
+                  {
+                    ++progress.segment;
+                    increment = nominal;
+                    continue;
+                  }
+              }
+            time_step        = std::abs(next - applied) / settings.platen_speed;
             unsigned int its = 0;
             const bool   ok  = solve_step(next, its);
             total_newton += its;
             if (!ok)
               {
-                u           = u_converged;
-                history_new = history_old;
+                u = u_converged;
                 ++total_cutbacks;
                 ++consecutive_cutbacks;
                 if (consecutive_cutbacks > settings.max_cutbacks)
@@ -1157,25 +1936,32 @@ namespace masonry
                     break;
                   }
                 increment /= 2;
-                easy_steps = 0;
+                progress.easy_steps = 0;
                 if (settings.progress)
                   pcout << "  cut-back: step halved to " << increment << " m\n";
                 continue;
               }
             consecutive_cutbacks = 0;
-            history_old          = history_new;
-            u_converged          = u;
-            applied              = next;
-            ++step;
-            const double force = reaction();
-            CurvePoint   p;
-            p.displacement = applied;
-            p.strain       = applied / height;
-            p.force        = force;
-            p.stress       = force / gross_area;
-            p.newton       = its;
-            p.max_damage   = max_damage();
-            p.gauge_strain = 0;
+            accept_step();
+            u_converged = u;
+            progress.time += time_step;
+            applied = next;
+            ++progress.step;
+            ++steps_this_run;
+            const unsigned int removed = delete_cells();
+            const double       force   = reaction();
+            CurvePoint         p;
+            p.displacement                               = applied;
+            p.strain                                     = applied / height;
+            p.force                                      = force;
+            p.stress                                     = force / gross_area;
+            p.newton                                     = its;
+            p.max_damage                                 = max_damage();
+            p.gauge_strain                               = 0;
+            p.cycle                                      = leg.cycle;
+            p.unloading                                  = leg.unloading;
+            p.deleted                                    = n_deleted;
+            std::tie(p.brick_damage_t, p.brick_damage_c) = max_brick_damage();
             if (gauge_span > 0)
               {
                 ghosted = u;
@@ -1185,33 +1971,70 @@ namespace masonry
                     settings.direction[d] / gauge_span;
               }
             curve.push_back(p);
+            append_curve(false);
             if (settings.progress)
-              pcout << "Step " << step << ": strain " << std::setprecision(4)
-                    << p.strain << ", stress " << p.stress * 1e-6
-                    << " MPa, max damage " << p.max_damage << ", " << its
-                    << " Newton iterations" << std::setprecision(6) << "\n";
-            const bool last =
-              std::abs(applied) >= std::abs(target) * (1 - 1e-12);
-            if (settings.vtu_interval > 0 && step % settings.vtu_interval == 0)
-              write_vtu(step, p.strain);
-            else if (last)
-              write_vtu(step, p.strain);
-            // grow after two consecutive easy steps
-            easy_steps =
-              its <= std::max(2u, settings.max_newton / 3) ? easy_steps + 1 : 0;
-            if (easy_steps >= 2)
               {
-                increment =
-                  std::abs(increment * settings.growth) > std::abs(nominal) ?
-                    nominal :
-                    increment * settings.growth;
-                easy_steps = 0;
+                pcout << "Step " << progress.step;
+                if (legs.size() > 1)
+                  pcout << " (cycle " << leg.cycle
+                        << (leg.unloading ? ", unloading" : "") << ")";
+                pcout << ": strain " << std::setprecision(4) << p.strain
+                      << ", stress " << p.stress * 1e-6 << " MPa, max damage "
+                      << p.max_damage;
+                if (!material.is_linear())
+                  pcout << ", bricks " << p.brick_damage_t << " / "
+                        << p.brick_damage_c;
+                pcout << ", " << its << " Newton iterations";
+                if (removed > 0)
+                  pcout << ", " << removed << " cells deleted";
+                pcout << std::setprecision(6) << "\n";
+              }
+            const bool last = progress.segment + 1 == legs.size() &&
+                              !leg.unloading &&
+                              applied >= leg.target * (1 - 1e-12);
+            if ((settings.vtu_interval > 0 &&
+                 progress.step % settings.vtu_interval == 0) ||
+                last)
+              write_vtu(progress.step, p.strain);
+            // grow after two consecutive easy steps
+            progress.easy_steps = its <= std::max(2u, settings.max_newton / 3) ?
+                                    progress.easy_steps + 1 :
+                                    0;
+            if (progress.easy_steps >= 2)
+              {
+                increment = std::min(increment * settings.growth, nominal);
+                progress.easy_steps = 0;
+              }
+            if (settings.checkpoint_interval > 0 &&
+                progress.step % settings.checkpoint_interval == 0)
+              save_checkpoint("running");
+            if (settings.max_steps > 0 &&
+                steps_this_run >= settings.max_steps &&
+                progress.segment < legs.size())
+              {
+                // the run's last leg may just have ended
+                const bool done =
+                  progress.segment + 1 == legs.size() &&
+                  (leg.unloading ? p.stress <= settings.unloading_stress :
+                                   applied >= leg.target * (1 - 1e-12));
+                if (!done)
+                  {
+                    status  = "interrupted";
+                    message = "stopped after `Maximum steps' = " +
+                              std::to_string(settings.max_steps) +
+                              " steps; `set Resume = true' continues from "
+                              "the checkpoint";
+                    pcout << "Stopped: " << message << "\n";
+                    break;
+                  }
               }
           }
-        if (status != "completed" && settings.write_vtu)
+        if (status != "completed")
           {
             u = u_converged;
-            write_vtu(step, curve.back().strain);
+            save_checkpoint(status);
+            if (settings.write_vtu)
+              write_vtu(progress.step, curve.back().strain);
           }
         write_curve(summary);
         if (settings.write_calculix)
@@ -1221,19 +2044,29 @@ namespace masonry
         summary["status"] = status;
         if (!message.empty())
           summary["message"] = message;
-        summary["steps"]             = step;
+        summary["steps"]             = progress.step;
         summary["newton_iterations"] = total_newton;
         summary["cut_backs"]         = total_cutbacks;
         summary["linear_solves"]     = n_solves;
-        summary["seconds"]           = seconds;
-        summary["seconds_assembly"]  = seconds_assembly;
-        summary["seconds_solve"]     = seconds_solve;
+        summary["deleted_cells"]     = n_deleted;
+        if (!material.is_linear())
+          {
+            const unsigned long all = n_material_cells + n_elastic_cells;
+            summary["cell_evaluations_elastic_fraction"] =
+              all > 0 ? double(n_elastic_cells) / all : 0.;
+          }
+        summary["seconds"]          = seconds;
+        summary["seconds_assembly"] = seconds_assembly;
+        summary["seconds_solve"]    = seconds_solve;
         pcout << "Result: peak stress " << std::setprecision(6)
               << summary["peak_stress"].as_number() * 1e-6 << " MPa at strain "
               << summary["strain_at_peak"].as_number() << ", initial modulus "
               << summary["initial_modulus"].as_number() * 1e-9 << " GPa; "
-              << step << " steps, " << total_newton << " Newton iterations, "
-              << total_cutbacks << " cut-backs\n";
+              << progress.step << " steps, " << total_newton
+              << " Newton iterations, " << total_cutbacks << " cut-backs";
+        if (n_deleted > 0)
+          pcout << ", " << n_deleted << " cells deleted";
+        pcout << "\n";
       }
     } // namespace
 

@@ -17,8 +17,36 @@ namespace masonry
     /** State of an interface integration point (irreversible). */
     struct InterfaceHistory
     {
-      /** Scalar damage, 0 (intact) to 1 (fully debonded). */
+      /**
+       * Scalar damage acting on the tractions, 0 (intact) to 1 (fully
+       * debonded); with viscosity, the regularised value.
+       */
       double damage = 0;
+      /** Damage of the law without viscosity (the envelope reached). */
+      double damage_inviscid = 0;
+
+      /** Write or read the state (boost serialisation). */
+      template <class Archive>
+      void
+      serialize(Archive &ar, const unsigned int)
+      {
+        ar &damage &damage_inviscid;
+      }
+    };
+
+    /** What a law needs to know about the point besides its opening. */
+    struct InterfacePoint
+    {
+      /**
+       * Factor on the strengths of this joint (dimensionless, 1: the
+       * nominal strengths): the random scatter of a specimen.
+       */
+      double strength_factor = 1;
+      /**
+       * Increment of (pseudo) time of the step, s, for the viscous
+       * regularisation; 0: no viscosity in this evaluation.
+       */
+      double time_step = 0;
     };
 
     /** Vectors and matrices in the local frame (normal, shear 1, shear 2). */
@@ -70,13 +98,14 @@ namespace masonry
 
       /**
        * Traction @p t (Pa) and consistent tangent @p tangent (Pa/m) for the
-       * opening @p jump (m), starting from the converged @p old state;
-       * @p updated receives the new state (accepted by the caller only
-       * when the load step converges).
+       * opening @p jump (m), starting from the converged @p old state at
+       * @p point; @p updated receives the new state (accepted by the
+       * caller only when the load step converges).
        */
       virtual void
       evaluate(const Local3           &jump,
                const InterfaceHistory &old,
+               const InterfacePoint   &point,
                InterfaceHistory       &updated,
                Local3                 &t,
                Local33                &tangent) const = 0;
@@ -92,6 +121,8 @@ namespace masonry
       double normal_stiffness = 0;
       /** Shear penalty stiffness, Pa/m. */
       double shear_stiffness = 0;
+      /** Viscosity of the damage regularisation, s (0: none). */
+      double viscosity = 0;
     };
   } // namespace brickwork
 } // namespace masonry

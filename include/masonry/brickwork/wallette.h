@@ -87,6 +87,37 @@ namespace masonry
        * compression does not change.
        */
       double distortion = 0;
+
+      /** Platen displacements (m, along direction) at which the cycles
+       * turn back; empty: one monotonic ramp to target_displacement. */
+      std::vector<double> cycle_amplitudes;
+      /** Cycles at each amplitude (repeats give the common and stability
+       * points). */
+      unsigned int cycles_per_amplitude = 1;
+      /** Unloading of a cycle ends when the stress has dropped to this
+       * (Pa, along the platen direction). */
+      double unloading_stress = 0.1e6;
+      /** Platen speed (m/s): the pseudo-time of a step is its platen
+       * displacement increment divided by this (viscous regularisation). */
+      double platen_speed = 1e-5;
+      /** Remove cells whose maximum principal strain exceeds
+       * deletion_strain after a converged step (0: never). */
+      double deletion_strain = 0;
+      /** At most this many cells are deleted after one step. */
+      unsigned int max_deletions = 10;
+      /** Coefficient of variation of the strengths of bricks and joints
+       * (a normal factor per brick and per joint, cut at 0.2 and 1.8). */
+      double strength_scatter = 0;
+      /** Seed of the random strength factors. */
+      unsigned int seed = 1;
+      /** Write a checkpoint every this many converged steps (0: only when
+       * the run stops early). */
+      unsigned int checkpoint_interval = 0;
+      /** Continue from the checkpoint in the output directory. */
+      bool resume = false;
+      /** Stop (status `interrupted', checkpoint written) after this many
+       * converged steps of this run (0: no limit). */
+      unsigned int max_steps = 0;
     };
 
     /** Mesh spacing in x, y, z (m). */
