@@ -199,8 +199,10 @@ namespace masonry
         find_interfaces();
         void
         setup_system();
+        /** Internal forces; the tangent matrix when @p need_matrix (a
+         * linear model keeps the one it assembled first). */
         void
-        assemble(const bool with_matrix);
+        assemble(const bool need_matrix);
         bool
         solve_step(const double displacement, unsigned int &iterations);
         void
@@ -316,7 +318,16 @@ namespace masonry
         /** Cells evaluated by the material / by their elastic matrix in
          * the assemblies (work skipped where nothing can change). */
         unsigned long n_material_cells = 0, n_elastic_cells = 0;
-        unsigned int  n_linear_skips = 0;
+        /** Whether the last assembly gave the initial (elastic) tangent,
+         * whether the kept solver was set up for it, and the kept solvers. */
+        bool initial_tangent = false, solver_is_initial = false;
+        /** A linear model's matrix is assembled once (until deletions). */
+        bool                           matrix_valid            = false;
+        unsigned int                   n_factorisations_reused = 0;
+        unsigned int                   n_matrix_assemblies     = 0;
+        std::unique_ptr<SolverControl> direct_control;
+        std::unique_ptr<TrilinosWrappers::SolverDirect>    direct;
+        std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
       };
 
       void
@@ -702,13 +713,19 @@ namespace masonry
       }
 
       void
-      Model::assemble(const bool with_matrix)
+      Model::assemble(const bool need_matrix)
       {
-        const auto start = Clock::now();
-        ghosted          = u;
-        f_int            = 0;
+        const auto start        = Clock::now();
+        ghosted                 = u;
+        f_int                   = 0;
+        const bool linear_model = material.is_linear() && law.is_linear();
+        bool       with_matrix = need_matrix && !(linear_model && matrix_valid);
+        initial_tangent        = true;
         if (with_matrix)
-          matrix = 0;
+          {
+            matrix = 0;
+            ++n_matrix_assemblies;
+          }
         std::vector<types::global_dof_index> dofs(24);
         Vector<double>                       ue(24), fe_local(24);
         FullMatrix<double>                   ke(24, 24);
@@ -772,7 +789,8 @@ namespace masonry
                   continue;
                 }
               ++n_material_cells;
-              fe_local = 0;
+              initial_tangent = false;
+              fe_local        = 0;
               if (with_matrix)
                 ke = 0;
               for (unsigned int q = 0; q < 8; ++q)
@@ -860,6 +878,10 @@ namespace masonry
                         }
                     }
                 }
+            if (initial_tangent)
+              for (unsigned int q = 0; q < n_quad; ++q)
+                if (history_new[n * n_quad + q].damage > 0)
+                  initial_tangent = false;
             f_int.add(face.dofs, fi);
             if (with_matrix)
               zero_constraints.distribute_local_to_global(ki,
@@ -867,8 +889,10 @@ namespace masonry
                                                           matrix);
           }
         f_int.compress(VectorOperation::add);
+        initial_tangent = Utilities::MPI::min(int(initial_tangent), comm) == 1;
         if (with_matrix)
           {
+            matrix_valid = true;
             matrix.compress(VectorOperation::add);
             // DOFs of deleted cells belong to no element: a unit diagonal
             // keeps the matrix regular (their increments are constrained)
@@ -893,39 +917,57 @@ namespace masonry
         const auto start = Clock::now();
         ++n_solves;
         const std::string &s = settings.linear_solver;
+        // the factorisation (or AMG hierarchy) of the initial tangent is
+        // kept while the tangent stays the initial one: every step of a
+        // linear model, the elastic steps of a nonlinear one
+        const bool reuse = initial_tangent && solver_is_initial;
+        if (reuse)
+          ++n_factorisations_reused;
         if (s == "direct" || s == "direct klu")
           {
-            SolverControl                                  control(1, 0);
-            TrilinosWrappers::SolverDirect::AdditionalData data(
-              false, s == "direct" ? "Amesos_Mumps" : "Amesos_Klu");
-            TrilinosWrappers::SolverDirect solver(control, data);
-            solver.solve(matrix, du, rhs);
+            if (!reuse)
+              {
+                direct_control = std::make_unique<SolverControl>(1, 0);
+                TrilinosWrappers::SolverDirect::AdditionalData data(
+                  false, s == "direct" ? "Amesos_Mumps" : "Amesos_Klu");
+                direct = std::make_unique<TrilinosWrappers::SolverDirect>(
+                  *direct_control, data);
+                direct->initialize(matrix);
+                solver_is_initial = initial_tangent;
+              }
+            direct->solve(du, rhs);
           }
         else
           {
-            TrilinosWrappers::PreconditionAMG                 amg;
-            TrilinosWrappers::PreconditionAMG::AdditionalData data;
-            std::vector<std::vector<bool>>                    modes;
-            DoFTools::extract_constant_modes(dof_handler,
-                                             ComponentMask(3, true),
-                                             modes);
-            data.constant_modes        = modes;
-            data.elliptic              = true;
-            data.higher_order_elements = false;
-            data.smoother_sweeps       = 2;
-            data.aggregation_threshold = 0.02;
-            amg.initialize(matrix, data);
+            if (!reuse)
+              amg.reset();
+            if (!amg)
+              {
+                amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+                TrilinosWrappers::PreconditionAMG::AdditionalData data;
+                std::vector<std::vector<bool>>                    modes;
+                DoFTools::extract_constant_modes(dof_handler,
+                                                 ComponentMask(3, true),
+                                                 modes);
+                data.constant_modes        = modes;
+                data.elliptic              = true;
+                data.higher_order_elements = false;
+                data.smoother_sweeps       = 2;
+                data.aggregation_threshold = 0.02;
+                amg->initialize(matrix, data);
+                solver_is_initial = initial_tangent;
+              }
             SolverControl control(5000,
                                   settings.linear_tolerance * rhs.l2_norm());
             if (s == "cg amg")
               {
                 TrilinosWrappers::SolverCG solver(control);
-                solver.solve(matrix, du, rhs, amg);
+                solver.solve(matrix, du, rhs, *amg);
               }
             else
               {
                 TrilinosWrappers::SolverGMRES solver(control);
-                solver.solve(matrix, du, rhs, amg);
+                solver.solve(matrix, du, rhs, *amg);
               }
           }
         seconds_solve +=
@@ -1605,6 +1647,7 @@ namespace masonry
           if (!used[i])
             orphans.push_back(i);
         make_constraints();
+        matrix_valid = solver_is_initial = false;
         return all.size();
       }
 
@@ -1833,14 +1876,13 @@ namespace masonry
             load_checkpoint();
             pcout << "Resumed from the checkpoint at step " << progress.step
                   << " (platen displacement " << progress.applied << " m)\n";
-            append_curve(true);
+            // curve.csv anew, up to the checkpoint
             const std::vector<CurvePoint> all = curve;
             curve.clear();
             for (const auto &p : all)
               {
                 curve.push_back(p);
-                if (curve.size() > 1)
-                  append_curve(false);
+                append_curve(curve.size() == 1);
               }
           }
         else
@@ -2044,11 +2086,13 @@ namespace masonry
         summary["status"] = status;
         if (!message.empty())
           summary["message"] = message;
-        summary["steps"]             = progress.step;
-        summary["newton_iterations"] = total_newton;
-        summary["cut_backs"]         = total_cutbacks;
-        summary["linear_solves"]     = n_solves;
-        summary["deleted_cells"]     = n_deleted;
+        summary["steps"]                 = progress.step;
+        summary["newton_iterations"]     = total_newton;
+        summary["cut_backs"]             = total_cutbacks;
+        summary["linear_solves"]         = n_solves;
+        summary["matrix_assemblies"]     = n_matrix_assemblies;
+        summary["factorisations_reused"] = n_factorisations_reused;
+        summary["deleted_cells"]         = n_deleted;
         if (!material.is_linear())
           {
             const unsigned long all = n_material_cells + n_elastic_cells;

@@ -1,0 +1,209 @@
+/**
+ * The brick law `damage plasticity` inside the wallette model, against
+ * closed forms of its uniaxial envelopes (computed here, independently of
+ * the plugin):
+ *  - one hexahedron (one enlarged brick, frictionless platens: uniaxial
+ *    stress) under load-unload cycles: the cycle peaks lie on the input
+ *    curve, the unloading slope is (1 - d_c) E0 and the residual strain the
+ *    plastic strain of the envelope (1e-8), and each cycle's loop area (the
+ *    work done from zero stress back to zero stress) equals the energy the
+ *    law dissipates between the two envelope points (1e-4);
+ *  - tension softening of one row of cubes of size h = 0.1, 0.05, 0.025 m:
+ *    the work to full separation is G_f x area for every h (1e-3): the
+ *    crack-band regularisation with the element's characteristic length;
+ *  - element deletion in that row: cells go only once their strain exceeds
+ *    the threshold, at most the cap per step, and the run goes on to the
+ *    end with zero force once all are gone;
+ *  - a run stopped after some steps and resumed from its checkpoint gives
+ *    the curve of the uninterrupted run (1e-12).
+ */
+#include <iomanip>
+
+#include "brickwork_tests.h"
+
+using namespace brickwork_tests;
+
+namespace
+{
+  // the law's parameters in this test
+  const double E0 = 10e9, f_c = 20e6, ratio = 0.4, eps_c = 0.004;
+  const double G_c = 20000, b_c = 0.7, f_t = 2e6, G_f = 80;
+
+  /** Compressive envelope stress at total strain e (element size l). */
+  double
+  sigma_c(const double e, const double l)
+  {
+    const double f0 = ratio * f_c, e0 = f0 / E0;
+    if (e <= e0)
+      return E0 * e;
+    if (e <= eps_c)
+      {
+        const double x = (e - e0) / (eps_c - e0);
+        const double k = E0 * (eps_c - e0) / (f_c - f0);
+        return f0 + (f_c - f0) * (k * x - x * x) / (1 + (k - 2) * x);
+      }
+    return f_c * std::exp(-(e - eps_c) * f_c * l / G_c);
+  }
+
+  /** Plastic strain on the compressive envelope. */
+  double
+  plastic_c(const double e, const double l)
+  {
+    return b_c * (e - sigma_c(e, l) / E0);
+  }
+
+  /** Energy dissipated per volume after loading to e and unloading to
+   * zero stress: area under the envelope minus the unloading triangle. */
+  double
+  dissipated_c(const double e, const double l)
+  {
+    const unsigned int n    = 20000; // Simpson, even
+    double             area = 0;
+    for (unsigned int i = 0; i <= n; ++i)
+      area += (i == 0 || i == n ? 1 : i % 2 ? 4 : 2) * sigma_c(e * i / n, l);
+    area *= e / n / 3;
+    return area - 0.5 * sigma_c(e, l) * (e - plastic_c(e, l));
+  }
+
+  std::string
+  material(const std::string &extra = "")
+  {
+    std::ostringstream m;
+    m << std::setprecision(17)
+      << "subsection Brick material\nset Model = damage plasticity\n"
+         "subsection Damage plasticity\n"
+      << "set Young's modulus = " << E0 << "\nset Poisson's ratio = 0.15\n"
+      << "set Compressive strength = " << f_c
+      << "\nset Elastic limit ratio = " << ratio
+      << "\nset Strain at peak = " << eps_c
+      << "\nset Compressive fracture energy = " << G_c
+      << "\nset Plastic strain ratio = " << b_c
+      << "\nset Tensile strength = " << f_t
+      << "\nset Tensile fracture energy = " << G_f << "\n"
+      << extra << "end\nend\nsubsection Bond\nset Pattern = stack\nend\n";
+    return m.str();
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+
+  // --- one hexahedron, cyclic uniaxial compression ------------------------
+  const std::string hex =
+    "set Courses = 1\nset Length in bricks = 1\n"
+    "set Elements along the length = 1\nset Elements along the width = 1\n"
+    "set Elements along the height = 1\nset Platen lateral restraint = "
+    "free\nset Protocol = cyclic\nset Cycle amplitudes = 0.002, 0.0045, "
+    "0.007, 0.012\nset Target strain = 0.012\nset Number of steps = "
+    "600\nset Unloading stress = 0\n";
+  const masonry::Json s = run("hex", prm(hex, material()));
+  // the enlarged brick 0.225 x 0.1125 x 0.075 m is the one cell
+  const double l = std::cbrt(0.225 * 0.1125 * 0.075);
+  check(s.at("status").as_string() == "completed", "hex: completed");
+  {
+    std::ifstream in("results/hex/cycles.csv");
+    std::string   line;
+    std::getline(in, line);
+    double       peak = 0, slope = 0, residual = 0, energy = 0, previous = 0;
+    unsigned int n = 0;
+    while (std::getline(in, line))
+      {
+        std::vector<double> v;
+        std::stringstream   cells(line);
+        std::string         cell;
+        while (std::getline(cells, cell, ','))
+          v.push_back(std::stod(cell));
+        // cycle,amplitude,peak,strain_at_peak,residual,modulus,ratio,energy
+        const double e = v[1];
+        peak           = std::max(peak, relative(v[2], sigma_c(e, l)));
+        const double d = 1 - sigma_c(e, l) / (E0 * (e - plastic_c(e, l)));
+        slope          = std::max(slope, relative(v[5], (1 - d) * E0));
+        residual = std::max(residual, std::abs(v[4] - plastic_c(e, l)) / eps_c);
+        const double D = dissipated_c(e, l);
+        energy         = std::max(energy, relative(v[7], D - previous));
+        previous       = D;
+        ++n;
+      }
+    check(n == 4, "hex: 4 cycles");
+    check(peak < 1e-8, "hex: cycle peaks on the input curve (1e-8)");
+    check(slope < 1e-8, "hex: unloading slope (1 - d_c) E0 (1e-8)");
+    check(residual < 1e-8,
+          "hex: residual strain = plastic strain of the envelope (1e-8)");
+    check(energy < 1e-4,
+          "hex: loop area = dissipated energy of the cycle (1e-4)");
+  }
+
+  // --- one row of cubes in tension: G_f x area for every size ------------
+  for (const unsigned int n : {1u, 2u, 4u})
+    {
+      const double       h = 0.1 / n;
+      const double       w = G_f / (f_t * h) - f_t / (2 * E0);
+      std::ostringstream t;
+      t << std::setprecision(17) << "set Brick length = 0.09\n"
+        << "set Brick width = 0.09\nset Brick height = " << h - 0.01
+        << "\nset Joint thickness = 0.01\nset Courses = 1\n"
+        << "set Length in bricks = 1\nset Elements along the length = " << n
+        << "\nset Elements along the width = " << n
+        << "\nset Elements along the height = 1\n"
+        << "set Platen lateral restraint = free\n"
+        << "set Platen direction = 0, 0, 1\nset Target strain = "
+        << f_t / E0 + 30 * w << "\nset Number of steps = 800\n";
+      const std::string name = "row_" + std::to_string(n);
+      const auto        r    = run(name, prm(t.str(), material()));
+      const double      work = r.at("external_work").as_number();
+      check(relative(work, G_f * 0.01) < 1e-3,
+            name + ": work to separation = G_f x area (1e-3)");
+      check(relative(r.at("peak_stress").as_number(), f_t) < 1e-3,
+            name + ": peak stress = f_t (1e-3)");
+      if (n == 4)
+        {
+          // deletion at 5 f_t / E0, at most 3 cells a step, 16 cells
+          const double threshold = 5 * f_t / E0;
+          const auto   d         = run("deletion",
+                             prm(t.str() + "set Deletion strain = " +
+                                   std::to_string(threshold) +
+                                   "\nset Maximum deletions per step = 3\n",
+                                 material()));
+          const auto   rows      = curve("deletion");
+          bool         ok        = true;
+          unsigned int last      = 0;
+          for (unsigned int i = 1; i < rows.size(); ++i)
+            {
+              const unsigned int k = rows[i][10];
+              // none before the threshold, then 3 more per step up to 16
+              const unsigned int expected =
+                rows[i][2] <= threshold ? 0 : std::min(16u, last + 3);
+              if (k != expected)
+                ok = false;
+              last = k;
+            }
+          check(ok, "deletion: cells go after the threshold, 3 per step");
+          check(d.at("status").as_string() == "completed" &&
+                  d.at("deleted_cells").as_number() == 16 &&
+                  rows.back()[4] == 0,
+                "deletion: all 16 cells gone, the run completes, force 0");
+        }
+    }
+
+  // --- checkpoint and resume ----------------------------------------------
+  const std::string short_hex = hex + "set Number of steps = 60\n";
+  run("full", prm(short_hex, material()));
+  const auto stopped =
+    run("resumed", prm(short_hex + "set Maximum steps = 37\n", material()));
+  check(stopped.at("status").as_string() == "interrupted",
+        "resume: the first part stops as interrupted");
+  const auto resumed =
+    run("resumed", prm(short_hex + "set Resume = true\n", material()));
+  const auto a = curve("full"), b = curve("resumed");
+  double     diff = a.size() == b.size() ? 0 : 1;
+  for (unsigned int i = 0; a.size() == b.size() && i < a.size(); ++i)
+    for (unsigned int j = 0; j < a[i].size(); ++j)
+      diff =
+        std::max(diff,
+                 std::abs(a[i][j] - b[i][j]) / std::max(1., std::abs(a[i][j])));
+  check(resumed.at("status").as_string() == "completed" && diff < 1e-12,
+        "resume: the resumed run reproduces the uninterrupted curve "
+        "(1e-12)");
+}
