@@ -311,6 +311,28 @@ namespace masonry
                           "Stop after this many converged steps of this run "
                           "with status `interrupted' and a checkpoint (0: no "
                           "limit); `Resume = true' continues.");
+        prm.declare_entry(
+          "Damage integration",
+          "implicit",
+          Selection("implicit|implex"),
+          "`implicit': the brick and joint laws are integrated implicitly "
+          "(Newton with their algorithmic tangents). `implex': IMPL-EX "
+          "(Oliver, Huespe & Cante 2008): within a step the damages and "
+          "plastic strains are extrapolated linearly in pseudo-time from "
+          "the two last converged steps and frozen, so the step is (nearly) "
+          "linear, with a positive tangent; after the step the laws are "
+          "updated implicitly at the converged displacements. The step "
+          "size follows `IMPL-EX damage tolerance' (never larger than the "
+          "nominal step).");
+        prm.declare_entry(
+          "IMPL-EX damage tolerance",
+          "0.05",
+          Double(0),
+          "IMPL-EX step control (dimensionless, > 0): when the largest "
+          "difference between the updated and the extrapolated damage of "
+          "a step exceeds this, the next step shrinks in proportion (to no "
+          "less than a fifth); below half of it, the step grows by `Step "
+          "growth factor' up to the nominal step.");
         prm.declare_entry("Write plot",
                           "true",
                           Bool(),
@@ -384,6 +406,8 @@ namespace masonry
         s.checkpoint_interval  = prm.get_integer("Checkpoint interval");
         s.resume               = prm.get_bool("Resume");
         s.max_steps            = prm.get_integer("Maximum steps");
+        s.implex               = prm.get("Damage integration") == "implex";
+        s.implex_tolerance     = positive("IMPL-EX damage tolerance");
         for (unsigned int i = 1; i < amplitudes.size(); ++i)
           AssertThrow(amplitudes[i] > amplitudes[i - 1],
                       ExcParameter("Cycle amplitudes",

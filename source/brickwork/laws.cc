@@ -87,6 +87,19 @@ namespace masonry
     InterfaceLaw::parse_parameters(dealii::ParameterHandler &)
     {}
 
+    void
+    InterfaceLaw::evaluate_extrapolated(const Local3           &jump,
+                                        const InterfaceHistory &old,
+                                        const InterfaceHistory &,
+                                        const double,
+                                        const InterfacePoint &point,
+                                        Local3               &t,
+                                        Local33              &tangent) const
+    {
+      InterfaceHistory scratch;
+      evaluate(jump, old, point, scratch, t, tangent);
+    }
+
     /** Linear joints: t = diag(k_n, k_s, k_s) [u]. */
     class ElasticInterface : public InterfaceLaw
     {
@@ -285,6 +298,33 @@ namespace masonry
           }
       }
 
+      void
+      evaluate_extrapolated(const Local3           &jump,
+                            const InterfaceHistory &old,
+                            const InterfaceHistory &older,
+                            const double            ratio,
+                            const InterfacePoint &,
+                            Local3  &t,
+                            Local33 &tangent) const override
+      {
+        // the damage extrapolated in pseudo-time, frozen within the step:
+        // the joint is linear but for the contact switch of the normal
+        const double d =
+          std::clamp(old.damage + ratio * (old.damage - older.damage),
+                     old.damage,
+                     1.);
+        const double k[3] = {normal_stiffness,
+                             shear_stiffness,
+                             shear_stiffness};
+        const double f[3] = {jump[0] > 0 ? 1 - d : 1., 1 - d, 1 - d};
+        for (unsigned int i = 0; i < 3; ++i)
+          {
+            t[i] = f[i] * k[i] * jump[i];
+            for (unsigned int j = 0; j < 3; ++j)
+              tangent[i][j] = (i == j ? f[i] * k[i] : 0);
+          }
+      }
+
     private:
       double f_t = 0, c = 0, G_I = 0, G_II = 0, eta = 2;
     };
@@ -343,6 +383,20 @@ namespace masonry
     void
     BrickMaterial::check_point(const BrickPoint &) const
     {}
+
+    void
+    BrickMaterial::evaluate_extrapolated(
+      const dealii::SymmetricTensor<2, 3> &strain,
+      const BrickState                    &old,
+      const BrickState &,
+      const double,
+      const BrickPoint              &point,
+      dealii::SymmetricTensor<2, 3> &stress,
+      dealii::SymmetricTensor<4, 3> &tangent) const
+    {
+      BrickState scratch;
+      evaluate(strain, old, point, scratch, stress, tangent);
+    }
 
     bool
     BrickMaterial::is_elastic(const dealii::SymmetricTensor<2, 3> &,

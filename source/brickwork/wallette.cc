@@ -226,6 +226,11 @@ namespace masonry
         /** The converged step becomes the old state. */
         void
         accept_step();
+        /** IMPL-EX: the implicit update of every point at the converged
+         * displacements; the largest difference between the updated and
+         * the extrapolated damage. */
+        double
+        implex_update();
         /** Delete cells over the strain threshold; how many. */
         unsigned int
         delete_cells();
@@ -252,11 +257,14 @@ namespace masonry
         {
           double       applied = 0, increment = 0, time = 0;
           unsigned int step = 0, easy_steps = 0, segment = 0;
+          /** Platen displacement increment of the last converged step. */
+          double last_increment = 0;
           template <class Archive>
           void
           serialize(Archive &ar, const unsigned int)
           {
-            ar &applied &increment &time &step &easy_steps &segment;
+            ar &applied &increment &time &step &easy_steps &segment
+              &last_increment;
           }
         } progress;
 
@@ -300,7 +308,13 @@ namespace masonry
         double       seconds_assembly = 0, seconds_solve = 0;
         /** Brick states at the quadrature points (nonlinear materials). */
         CellDataStorage<typename Triangulation<3>::cell_iterator, BrickState>
-          states_old, states_new;
+          states_old, states_new, states_older;
+        /** Joint states two steps back (IMPL-EX). */
+        std::vector<InterfaceHistory> history_older;
+        /** IMPL-EX: pseudo-time ratio of this step to the last. */
+        double implex_ratio = 0;
+        /** IMPL-EX: largest damage error of a step over the run. */
+        double implex_max_error = 0;
         /** Per active cell: characteristic length, strength factor,
          * deleted. */
         std::vector<double> cell_length, cell_factor;
@@ -521,7 +535,8 @@ namespace masonry
             q_weights = {{0.5, 0.5}};
           }
         history_old.assign(interfaces.size() * n_quad, InterfaceHistory());
-        history_new = history_old;
+        history_new   = history_old;
+        history_older = history_old;
       }
 
       void
@@ -661,6 +676,7 @@ namespace masonry
                 material.check_point(point);
                 states_old.initialize(cell, 8);
                 states_new.initialize(cell, 8);
+                states_older.initialize(cell, 8);
               }
 
         // the elastic matrix of every cell, one per cell shape: all cells
@@ -747,7 +763,7 @@ namespace masonry
               for (unsigned int i = 0; i < 24; ++i)
                 ue[i] = ghosted[dofs[i]];
               bool                                     elastic = linear;
-              std::vector<std::shared_ptr<BrickState>> old, updated;
+              std::vector<std::shared_ptr<BrickState>> old, updated, older;
               BrickPoint                               point;
               if (!linear)
                 {
@@ -756,6 +772,8 @@ namespace masonry
                   point.time_step             = time_step;
                   old                         = states_old.get_data(cell);
                   updated                     = states_new.get_data(cell);
+                  if (settings.implex)
+                    older = states_older.get_data(cell);
                   fe_values.reinit(cell);
                   elastic = true;
                   for (unsigned int q = 0; q < 8; ++q)
@@ -766,7 +784,9 @@ namespace masonry
                           ue[i] *
                           fe_values[displacement].symmetric_gradient(i, q);
                       if (elastic &&
-                          !material.is_elastic(strain[q], *old[q], point))
+                          (!material.is_elastic(strain[q], *old[q], point) ||
+                           (settings.implex &&
+                            !material.is_elastic(strain[q], *older[q], point))))
                         elastic = false;
                     }
                 }
@@ -795,8 +815,17 @@ namespace masonry
                 ke = 0;
               for (unsigned int q = 0; q < 8; ++q)
                 {
-                  material.evaluate(
-                    strain[q], *old[q], point, *updated[q], stress, C);
+                  if (settings.implex)
+                    material.evaluate_extrapolated(strain[q],
+                                                   *old[q],
+                                                   *older[q],
+                                                   implex_ratio,
+                                                   point,
+                                                   stress,
+                                                   C);
+                  else
+                    material.evaluate(
+                      strain[q], *old[q], point, *updated[q], stress, C);
                   const double JxW = fe_values.JxW(q);
                   for (unsigned int i = 0; i < 24; ++i)
                     B[i] = fe_values[displacement].symmetric_gradient(i, q);
@@ -854,12 +883,21 @@ namespace masonry
                       }
                   Local3  t;
                   Local33 D;
-                  law.evaluate(jump,
-                               history_old[n * n_quad + q],
-                               point,
-                               history_new[n * n_quad + q],
-                               t,
-                               D);
+                  if (settings.implex)
+                    law.evaluate_extrapolated(jump,
+                                              history_old[n * n_quad + q],
+                                              history_older[n * n_quad + q],
+                                              implex_ratio,
+                                              point,
+                                              t,
+                                              D);
+                  else
+                    law.evaluate(jump,
+                                 history_old[n * n_quad + q],
+                                 point,
+                                 history_new[n * n_quad + q],
+                                 t,
+                                 D);
                   for (unsigned int v = 0; v < 8; ++v)
                     {
                       const double sv = (v < 4 ? -1. : 1.) * N[v % 4];
@@ -880,7 +918,9 @@ namespace masonry
                 }
             if (initial_tangent)
               for (unsigned int q = 0; q < n_quad; ++q)
-                if (history_new[n * n_quad + q].damage > 0)
+                if ((settings.implex ? history_old :
+                                       history_new)[n * n_quad + q]
+                      .damage > 0)
                   initial_tangent = false;
             f_int.add(face.dofs, fi);
             if (with_matrix)
@@ -1554,6 +1594,8 @@ namespace masonry
       void
       Model::accept_step()
       {
+        if (settings.implex)
+          history_older = history_old;
         history_old = history_new;
         if (!material.is_linear())
           for (const auto &cell : triangulation.active_cell_iterators())
@@ -1561,9 +1603,101 @@ namespace masonry
               {
                 const auto old     = states_old.get_data(cell);
                 const auto updated = states_new.get_data(cell);
+                const auto older   = states_older.get_data(cell);
                 for (unsigned int q = 0; q < 8; ++q)
-                  *old[q] = *updated[q];
+                  {
+                    if (settings.implex)
+                      *older[q] = *old[q];
+                    *old[q] = *updated[q];
+                  }
               }
+      }
+
+      double
+      Model::implex_update()
+      {
+        ghosted             = u;
+        double error        = 0;
+        auto   extrapolated = [&](const double d, const double d_older) {
+          return std::clamp(d + implex_ratio * (d - d_older), d, 1.);
+        };
+        if (!material.is_linear())
+          {
+            QGauss<3>   quadrature(2);
+            FEValues<3> fe_values(fe, quadrature, update_gradients);
+            std::vector<SymmetricTensor<2, 3>> eps(8);
+            const FEValuesExtractors::Vector   displacement(0);
+            SymmetricTensor<2, 3>              stress;
+            SymmetricTensor<4, 3>              C;
+            for (const auto &cell : dof_handler.active_cell_iterators())
+              if (cell->is_locally_owned() &&
+                  !deleted[cell->active_cell_index()])
+                {
+                  const unsigned int c = cell->active_cell_index();
+                  fe_values.reinit(cell);
+                  fe_values[displacement].get_function_symmetric_gradients(
+                    ghosted, eps);
+                  BrickPoint point;
+                  point.characteristic_length = cell_length[c];
+                  point.strength_factor       = cell_factor[c];
+                  point.time_step             = time_step;
+                  const auto old              = states_old.get_data(cell);
+                  const auto older            = states_older.get_data(cell);
+                  const auto updated          = states_new.get_data(cell);
+                  for (unsigned int q = 0; q < 8; ++q)
+                    {
+                      material.evaluate(
+                        eps[q], *old[q], point, *updated[q], stress, C);
+                      error =
+                        std::max({error,
+                                  std::abs(updated[q]->damage_t -
+                                           extrapolated(old[q]->damage_t,
+                                                        older[q]->damage_t)),
+                                  std::abs(updated[q]->damage_c -
+                                           extrapolated(old[q]->damage_c,
+                                                        older[q]->damage_c))});
+                    }
+                }
+          }
+        InterfacePoint point;
+        point.time_step = time_step;
+        Local3  t;
+        Local33 D;
+        for (unsigned int n = 0; n < interfaces.size(); ++n)
+          {
+            const auto &face = interfaces[n];
+            if (!face.owned || face_deleted[n])
+              continue;
+            point.strength_factor = face_factor[n];
+            const unsigned int a  = face.axis;
+            for (unsigned int qy = 0; qy < 2; ++qy)
+              for (unsigned int qx = 0; qx < 2; ++qx)
+                {
+                  const unsigned int q  = qx + 2 * qy;
+                  const double       xi = q_points[qx], eta = q_points[qy];
+                  const double       N[4] = {(1 - xi) * (1 - eta),
+                                             xi * (1 - eta),
+                                             (1 - xi) * eta,
+                                             xi * eta};
+                  Local3             jump{{0, 0, 0}};
+                  for (unsigned int v = 0; v < 4; ++v)
+                    for (unsigned int k = 0; k < 3; ++k)
+                      {
+                        const unsigned int d = (a + k) % 3;
+                        jump[k] += N[v] * (ghosted[face.dofs[12 + 3 * v + d]] -
+                                           ghosted[face.dofs[3 * v + d]]);
+                      }
+                  const unsigned int i = n * n_quad + q;
+                  law.evaluate(
+                    jump, history_old[i], point, history_new[i], t, D);
+                  error =
+                    std::max(error,
+                             std::abs(history_new[i].damage -
+                                      extrapolated(history_old[i].damage,
+                                                   history_older[i].damage)));
+                }
+          }
+        return Utilities::MPI::max(error, comm);
       }
 
       std::pair<double, double>
@@ -1754,7 +1888,7 @@ namespace masonry
           const types::global_dof_index n_dofs = dof_handler.n_dofs();
           ar &n_ranks                  &n_dofs;
           ar &progress &curve &total_newton &total_cutbacks &n_solves &n_deleted
-            &deleted &face_deleted &orphans                      &history_old;
+            &deleted &face_deleted &orphans &history_old         &history_older;
           std::vector<std::pair<types::global_dof_index, double>> values;
           for (const auto i : owned)
             values.emplace_back(i, u[i]);
@@ -1763,8 +1897,12 @@ namespace masonry
           if (!material.is_linear())
             for (const auto &cell : triangulation.active_cell_iterators())
               if (cell->is_locally_owned())
-                for (const auto &state : states_old.get_data(cell))
-                  states.push_back(*state);
+                {
+                  for (const auto &state : states_old.get_data(cell))
+                    states.push_back(*state);
+                  for (const auto &state : states_older.get_data(cell))
+                    states.push_back(*state);
+                }
           ar         &states;
           std::string s = status;
           ar         &s;
@@ -1803,7 +1941,8 @@ namespace masonry
                                        " DOFs; resume with the same "
                                        "parameters and number of ranks"));
             ar &progress &curve &total_newton &total_cutbacks &n_solves
-              &n_deleted &deleted &face_deleted &orphans &history_old;
+              &n_deleted &deleted &face_deleted &orphans &history_old
+                &history_older;
             history_new = history_old;
             std::vector<std::pair<types::global_dof_index, double>> values;
             ar                                                     &values;
@@ -1817,13 +1956,14 @@ namespace masonry
               for (const auto &cell : triangulation.active_cell_iterators())
                 if (cell->is_locally_owned())
                   {
-                    const auto old = states_old.get_data(cell);
-                    const auto upd = states_new.get_data(cell);
+                    const auto old   = states_old.get_data(cell);
+                    const auto upd   = states_new.get_data(cell);
+                    const auto older = states_older.get_data(cell);
+                    AssertThrow(k + 16 <= states.size(), ExcInternalError());
                     for (unsigned int q = 0; q < 8; ++q)
-                      {
-                        AssertThrow(k < states.size(), ExcInternalError());
-                        *old[q] = *upd[q] = states[k++];
-                      }
+                      *old[q] = *upd[q] = states[k++];
+                    for (unsigned int q = 0; q < 8; ++q)
+                      *older[q] = states[k++];
                   }
           }
         catch (const boost::archive::archive_exception &e)
@@ -1956,7 +2096,14 @@ namespace masonry
                     continue;
                   }
               }
-            time_step        = std::abs(next - applied) / settings.platen_speed;
+            time_step = std::abs(next - applied) / settings.platen_speed;
+            // IMPL-EX: no extrapolation across a reversal of the platen
+            implex_ratio =
+              progress.last_increment > 0 && curve.size() > 1 &&
+                  curve.back().unloading == leg.unloading &&
+                  curve.back().cycle == leg.cycle ?
+                std::abs(next - applied) / progress.last_increment :
+                0.;
             unsigned int its = 0;
             const bool   ok  = solve_step(next, its);
             total_newton += its;
@@ -1984,8 +2131,15 @@ namespace masonry
                 continue;
               }
             consecutive_cutbacks = 0;
+            double implex_error  = 0;
+            if (settings.implex)
+              {
+                implex_error     = implex_update();
+                implex_max_error = std::max(implex_max_error, implex_error);
+              }
             accept_step();
-            u_converged = u;
+            progress.last_increment = std::abs(next - applied);
+            u_converged             = u;
             progress.time += time_step;
             applied = next;
             ++progress.step;
@@ -2038,14 +2192,28 @@ namespace masonry
                  progress.step % settings.vtu_interval == 0) ||
                 last)
               write_vtu(progress.step, p.strain);
-            // grow after two consecutive easy steps
-            progress.easy_steps = its <= std::max(2u, settings.max_newton / 3) ?
-                                    progress.easy_steps + 1 :
-                                    0;
-            if (progress.easy_steps >= 2)
+            if (settings.implex)
               {
-                increment = std::min(increment * settings.growth, nominal);
-                progress.easy_steps = 0;
+                // IMPL-EX step control on the damage error of the step
+                if (implex_error > settings.implex_tolerance)
+                  increment *=
+                    std::max(0.2,
+                             0.9 * settings.implex_tolerance / implex_error);
+                else if (implex_error < 0.5 * settings.implex_tolerance)
+                  increment = std::min(increment * settings.growth, nominal);
+              }
+            else
+              {
+                // grow after two consecutive easy steps
+                progress.easy_steps =
+                  its <= std::max(2u, settings.max_newton / 3) ?
+                    progress.easy_steps + 1 :
+                    0;
+                if (progress.easy_steps >= 2)
+                  {
+                    increment = std::min(increment * settings.growth, nominal);
+                    progress.easy_steps = 0;
+                  }
               }
             if (settings.checkpoint_interval > 0 &&
                 progress.step % settings.checkpoint_interval == 0)
@@ -2093,6 +2261,8 @@ namespace masonry
         summary["matrix_assemblies"]     = n_matrix_assemblies;
         summary["factorisations_reused"] = n_factorisations_reused;
         summary["deleted_cells"]         = n_deleted;
+        if (settings.implex)
+          summary["implex_max_damage_error"] = implex_max_error;
         if (!material.is_linear())
           {
             const unsigned long all = n_material_cells + n_elastic_cells;

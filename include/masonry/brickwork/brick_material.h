@@ -129,6 +129,23 @@ namespace masonry
                dealii::SymmetricTensor<4, 3>       &tangent) const;
 
       /**
+       * IMPL-EX (Oliver, Huespe & Cante 2008): stress and tangent at
+       * @p strain with the internal variables extrapolated linearly in
+       * pseudo-time from the two last converged states, @p old + @p ratio
+       * (@p old - @p older), where @p ratio is the ratio of this step's
+       * pseudo-time increment to the last one; nothing is updated. The
+       * default evaluates the implicit law from @p old.
+       */
+      virtual void
+      evaluate_extrapolated(const dealii::SymmetricTensor<2, 3> &strain,
+                            const BrickState                    &old,
+                            const BrickState                    &older,
+                            const double                         ratio,
+                            const BrickPoint                    &point,
+                            dealii::SymmetricTensor<2, 3>       &stress,
+                            dealii::SymmetricTensor<4, 3>       &tangent) const;
+
+      /**
        * Whether evaluate() at @p strain from @p old would give exactly the
        * initial elastic response (stress = C0 : strain, tangent C0, state
        * unchanged): intact, no plastic strain, inside the initial elastic

@@ -110,6 +110,21 @@ namespace masonry
                Local3                 &t,
                Local33                &tangent) const = 0;
 
+      /**
+       * IMPL-EX: traction and tangent at @p jump with the damage
+       * extrapolated from the two last converged states, @p old + @p ratio
+       * (@p old - @p older), not updated. The default evaluates the
+       * implicit law from @p old.
+       */
+      virtual void
+      evaluate_extrapolated(const Local3           &jump,
+                            const InterfaceHistory &old,
+                            const InterfaceHistory &older,
+                            const double            ratio,
+                            const InterfacePoint   &point,
+                            Local3                 &t,
+                            Local33                &tangent) const;
+
       /** Whether the law is linear (tangent independent of the state). */
       virtual bool
       is_linear() const

@@ -115,6 +115,12 @@ namespace masonry
       unsigned int checkpoint_interval = 0;
       /** Continue from the checkpoint in the output directory. */
       bool resume = false;
+      /** IMPL-EX integration of brick and joint damage: internal
+       * variables extrapolated in each step, updated after it. */
+      bool implex = false;
+      /** IMPL-EX step control: largest allowed difference between the
+       * extrapolated and the updated damage in a step. */
+      double implex_tolerance = 0.05;
       /** Stop (status `interrupted', checkpoint written) after this many
        * converged steps of this run (0: no limit). */
       unsigned int max_steps = 0;
