@@ -1,0 +1,525 @@
+/**
+ * @file
+ * Brick material `damage plasticity`: effective-stress plasticity with
+ * separate tension and compression damage for bricks under cyclic
+ * compression.
+ *
+ * The formulation (documented for users in the registration text below and
+ * in doc/brickwork.md):
+ * - effective stress s = C0 : (e - e_p), split spectrally into s+ (positive
+ *   principal stresses) and s- = s - s+;
+ * - equivalent effective stresses, positively homogeneous of degree one:
+ *   tau_c = (sqrt(3 J2(s-)) + alpha I1(s-)) / (1 - alpha) (Lubliner et al.
+ *   1989, compressive part; |s| in uniaxial compression) and tau_t = the
+ *   largest principal effective stress (Rankine);
+ * - uniaxial envelopes sigma(e) of the total strain e, decomposed as
+ *   sigma = (1 - d) E0 (e - e_p(e)) with e_p = b (e - sigma / E0) (Birtel &
+ *   Mark 2006), the damage capped at d_max and the rest taken by e_p;
+ * - the explicit update of Faria, Oliver & Cervera (1998) / Petracca et al.
+ *   (2022, ASDConcrete3D) in a form exact in uniaxial stress: the envelope
+ *   strain reached is e = e_p(kappa_old) + tau / E0, and on loading the
+ *   plastic strain grows along C0^-1 : s-+ so that the new s-+ is the trial
+ *   one scaled to the envelope's effective stress; no local iterations;
+ * - sigma = (1 - d_t) s+ + (1 - d_c) s-: tension damage does not act on
+ *   closed cracks (stiffness recovery), unloading goes with (1 - d) E0
+ *   towards the plastic strain;
+ * - softening regularised with the fracture energies and the element's
+ *   characteristic length (crack band);
+ * - optional viscous regularisation of both damages.
+ * The tangent is the central-difference derivative of this stress update
+ * (consistent with it to O(h^2)); cells that stay elastic use C0.
+ */
+#include <masonry/brickwork/brick_material.h>
+#include <masonry/core/parameters.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace masonry
+{
+  namespace brickwork
+  {
+    using dealii::SymmetricTensor;
+
+    namespace
+    {
+      /** A point of a uniaxial envelope. */
+      struct EnvelopePoint
+      {
+        /** Stress (Pa, positive), plastic strain, damage. */
+        double stress = 0, plastic = 0, damage = 0;
+      };
+    } // namespace
+
+    /** See the file documentation. */
+    class DamagePlasticityBrick : public BrickMaterial
+    {
+    public:
+      static void
+      declare_parameters(dealii::ParameterHandler &prm)
+      {
+        using dealii::Patterns::Double;
+        prm.declare_entry("Young's modulus",
+                          "10e9",
+                          Double(0),
+                          "Initial Young's modulus E0 of the enlarged "
+                          "bricks, Pa (> 0).");
+        prm.declare_entry("Poisson's ratio",
+                          "0.15",
+                          Double(-1, 0.5),
+                          "Poisson's ratio (dimensionless, -1 < nu < 0.5).");
+        prm.declare_entry("Compressive strength",
+                          "20e6",
+                          Double(0),
+                          "Uniaxial compressive strength f_c, Pa (> 0): the "
+                          "peak of the compressive envelope.");
+        prm.declare_entry(
+          "Elastic limit ratio",
+          "0.4",
+          Double(0, 1),
+          "Stress at the end of the linear part of the compressive "
+          "envelope over f_c (dimensionless, 0 < ratio < 1).");
+        prm.declare_entry(
+          "Strain at peak",
+          "0.004",
+          Double(0),
+          "Total strain eps_c at the compressive peak (dimensionless, at "
+          "least f_c / E0). Between the elastic limit e0 = ratio f_c / E0 "
+          "and eps_c the envelope is sigma = f_c0 + (f_c - f_c0) (k x - "
+          "x^2) / (1 + (k - 2) x), x = (e - e0) / (eps_c - e0), k = E0 "
+          "(eps_c - e0) / (f_c - f_c0): slope E0 at e0, zero at the peak "
+          "(the CEB-FIP/Sargin shape).");
+        prm.declare_entry(
+          "Compressive fracture energy",
+          "20000",
+          Double(0),
+          "Crushing energy G_c, J/m^2 (> 0): after the peak sigma = f_c "
+          "exp(-(e - eps_c) / w_c) with w_c = G_c / (f_c l), so that the "
+          "area under the softening branch times the element's "
+          "characteristic length l (cube root of its volume) is G_c.");
+        prm.declare_entry(
+          "Plastic strain ratio",
+          "0.7",
+          Double(0, 1),
+          "Share b_c of the inelastic strain e - sigma / E0 that is plastic "
+          "on the compressive envelope (dimensionless, 0 <= b_c < 1): "
+          "e_p = b_c (e - sigma / E0); the rest is damage, d_c = 1 - sigma "
+          "/ (E0 (e - e_p)), so unloading follows (1 - d_c) E0 to e_p.");
+        prm.declare_entry("Tensile strength",
+                          "2e6",
+                          Double(0),
+                          "Uniaxial tensile strength f_t, Pa (> 0); linear "
+                          "up to it.");
+        prm.declare_entry(
+          "Tensile fracture energy",
+          "80",
+          Double(0),
+          "Fracture energy G_f, J/m^2 (> 0): after the peak sigma = f_t "
+          "exp(-(e - f_t / E0) / w_t), w_t = G_f / (f_t l) - f_t / (2 "
+          "E0), so that the whole area under the tension curve times l is "
+          "G_f. Needs elements smaller than 2 G_f E0 / f_t^2.");
+        prm.declare_entry(
+          "Tensile plastic strain ratio",
+          "0",
+          Double(0, 1),
+          "Share b_t of the inelastic tensile strain that is plastic "
+          "(dimensionless, 0 <= b_t < 1; 0: cracks close completely).");
+        prm.declare_entry(
+          "Biaxial to uniaxial strength ratio",
+          "1.16",
+          Double(1, 10),
+          "Equibiaxial over uniaxial compressive strength rho "
+          "(dimensionless, >= 1): alpha = (rho - 1) / (2 rho - 1) in the "
+          "compressive measure (sqrt(3 J2) + alpha I1) / (1 - alpha) of the "
+          "negative part of the effective stress (Lubliner et al. 1989).");
+        prm.declare_entry(
+          "Maximum damage",
+          "0.99",
+          Double(0, 1),
+          "Cap of both damages (dimensionless, 0 < d_max < 1): beyond it the "
+          "plastic strain takes the rest of the envelope, so the stress "
+          "still follows the envelope and the stiffness never vanishes.");
+        prm.declare_entry(
+          "Viscosity",
+          "0",
+          Double(0),
+          "Viscous regularisation of both damages, s (>= 0; 0: none): d_v = "
+          "(d + (mu / dt) d_v,old) / (1 + mu / dt) with dt the pseudo-time "
+          "of the step (platen displacement increment / `Platen speed').");
+      }
+
+      void
+      parse_parameters(dealii::ParameterHandler &prm) override
+      {
+        E             = prm.get_double("Young's modulus");
+        nu            = prm.get_double("Poisson's ratio");
+        f_c           = prm.get_double("Compressive strength");
+        ratio         = prm.get_double("Elastic limit ratio");
+        eps_c         = prm.get_double("Strain at peak");
+        G_c           = prm.get_double("Compressive fracture energy");
+        b_c           = prm.get_double("Plastic strain ratio");
+        f_t           = prm.get_double("Tensile strength");
+        G_f           = prm.get_double("Tensile fracture energy");
+        b_t           = prm.get_double("Tensile plastic strain ratio");
+        rho           = prm.get_double("Biaxial to uniaxial strength ratio");
+        d_max         = prm.get_double("Maximum damage");
+        mu_visc       = prm.get_double("Viscosity");
+        auto positive = [](const double v, const char *entry) {
+          AssertThrow(v > 0, ExcParameter(entry, "must be positive"));
+        };
+        positive(E, "Young's modulus");
+        positive(f_c, "Compressive strength");
+        positive(G_c, "Compressive fracture energy");
+        positive(f_t, "Tensile strength");
+        positive(G_f, "Tensile fracture energy");
+        AssertThrow(nu > -1 && nu < 0.5,
+                    ExcParameter("Poisson's ratio",
+                                 "must lie strictly between -1 and 0.5"));
+        AssertThrow(ratio > 0 && ratio < 1,
+                    ExcParameter("Elastic limit ratio",
+                                 "must lie strictly between 0 and 1"));
+        AssertThrow(b_c < 1,
+                    ExcParameter("Plastic strain ratio", "must be below 1"));
+        AssertThrow(b_t < 1,
+                    ExcParameter("Tensile plastic strain ratio",
+                                 "must be below 1"));
+        AssertThrow(d_max > 0 && d_max < 1,
+                    ExcParameter("Maximum damage",
+                                 "must lie strictly between 0 and 1"));
+        std::ostringstream m;
+        m << "must be at least f_c / E0 = " << f_c / E
+          << " (else the envelope cannot rise from the elastic limit to "
+             "the peak with a slope below E0)";
+        AssertThrow(eps_c >= f_c / E * (1 + 1e-12),
+                    ExcParameter("Strain at peak", m.str()));
+        alpha  = (rho - 1) / (2 * rho - 1);
+        lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
+        mu     = E / (2 * (1 + nu));
+      }
+
+      bool
+      is_linear() const override
+      {
+        return false;
+      }
+
+      double
+      youngs_modulus() const override
+      {
+        return E;
+      }
+
+      double
+      poissons_ratio() const override
+      {
+        return nu;
+      }
+
+      void
+      check_point(const BrickPoint &point) const override
+      {
+        const double ft    = point.strength_factor * f_t;
+        const double l_max = 2 * G_f * E / (ft * ft);
+        if (point.characteristic_length >= l_max)
+          {
+            std::ostringstream m;
+            m << "is too small for elements of " << point.characteristic_length
+              << " m: the tension softening needs l < 2 G_f E0 / f_t^2 = "
+              << l_max << " m (refine the mesh or raise the energy)";
+            AssertThrow(false,
+                        ExcParameter("Tensile fracture energy", m.str()));
+          }
+      }
+
+      bool
+      is_elastic(const SymmetricTensor<2, 3> &strain,
+                 const BrickState            &old,
+                 const BrickPoint            &point) const override
+      {
+        if (old.kappa_t != 0 || old.kappa_c != 0 || old.damage_t != 0 ||
+            old.damage_c != 0 || old.plastic_strain.norm() != 0)
+          return false;
+        const SymmetricTensor<2, 3> s = effective(strain);
+        double                      tau_t, tau_c;
+        SymmetricTensor<2, 3>       plus, minus;
+        split(s, plus, minus, tau_t, tau_c);
+        const double phi = point.strength_factor;
+        return tau_c <= phi * ratio * f_c && tau_t <= phi * f_t;
+      }
+
+      void
+      evaluate(const SymmetricTensor<2, 3> &strain,
+               const BrickState            &old,
+               const BrickPoint            &point,
+               BrickState                  &updated,
+               SymmetricTensor<2, 3>       &stress,
+               SymmetricTensor<4, 3>       &tangent) const override
+      {
+        update(strain, old, point, updated, stress);
+        if (is_elastic(strain, old, point))
+          {
+            tangent = elastic_stiffness();
+            return;
+          }
+        auto function = [&](const SymmetricTensor<2, 3> &e) {
+          BrickState            scratch;
+          SymmetricTensor<2, 3> s;
+          update(e, old, point, scratch, s);
+          return s;
+        };
+        tangent = numerical_tangent(function, strain);
+      }
+
+      void
+      evaluate_extrapolated(const SymmetricTensor<2, 3> &strain,
+                            const BrickState            &old,
+                            const BrickState            &older,
+                            const double                 ratio_t,
+                            const BrickPoint &,
+                            SymmetricTensor<2, 3> &stress,
+                            SymmetricTensor<4, 3> &tangent) const override
+      {
+        // damages and plastic strain extrapolated and frozen
+        auto extrapolate = [&](const double d, const double d_older) {
+          return std::clamp(d + ratio_t * (d - d_older), d, d_max);
+        };
+        const double d_t = extrapolate(old.damage_t, older.damage_t);
+        const double d_c = extrapolate(old.damage_c, older.damage_c);
+        const SymmetricTensor<2, 3> plastic =
+          old.plastic_strain +
+          ratio_t * (old.plastic_strain - older.plastic_strain);
+        auto function = [&](const SymmetricTensor<2, 3> &e) {
+          SymmetricTensor<2, 3> plus, minus;
+          double                tau_t, tau_c;
+          split(effective(e - plastic), plus, minus, tau_t, tau_c);
+          return SymmetricTensor<2, 3>((1 - d_t) * plus + (1 - d_c) * minus);
+        };
+        stress  = function(strain);
+        tangent = numerical_tangent(function, strain);
+      }
+
+    private:
+      /** C0 : e. */
+      SymmetricTensor<2, 3>
+      effective(const SymmetricTensor<2, 3> &e) const
+      {
+        return lambda * dealii::trace(e) * dealii::unit_symmetric_tensor<3>() +
+               2 * mu * e;
+      }
+
+      /** C0^-1 : s. */
+      SymmetricTensor<2, 3>
+      compliance(const SymmetricTensor<2, 3> &s) const
+      {
+        return (1 + nu) / E * s -
+               nu / E * dealii::trace(s) * dealii::unit_symmetric_tensor<3>();
+      }
+
+      /** Spectral split of @p s and the equivalent stresses. */
+      void
+      split(const SymmetricTensor<2, 3> &s,
+            SymmetricTensor<2, 3>       &plus,
+            SymmetricTensor<2, 3>       &minus,
+            double                      &tau_t,
+            double                      &tau_c) const
+      {
+        plus = 0;
+        if (s.norm() == 0)
+          {
+            minus = 0;
+            tau_t = tau_c = 0;
+            return;
+          }
+        const auto eig = dealii::eigenvectors(s);
+        tau_t          = std::max(eig[0].first, 0.);
+        // <x>+ blended over (0, delta) by 2 x^2 / delta - x^3 / delta^2
+        // (C1, exact outside the band): a principal stress that is zero at
+        // equilibrium (the free lateral directions of uniaxial loading)
+        // sits at the kink of the split, where Newton with a
+        // discontinuous tangent stalls
+        const double delta = 1e-3 * f_t;
+        for (unsigned int i = 0; i < 3; ++i)
+          if (eig[i].first > 0)
+            {
+              const double x = eig[i].first;
+              const double p =
+                x >= delta ? x : x * x * (2 / delta - x / (delta * delta));
+              plus +=
+                p * dealii::symmetrize(
+                      dealii::outer_product(eig[i].second, eig[i].second));
+            }
+        minus           = s - plus;
+        const double I1 = dealii::trace(minus);
+        const double J2 =
+          0.5 * dealii::deviator(minus).norm() * dealii::deviator(minus).norm();
+        tau_c = std::max(0., (std::sqrt(3 * J2) + alpha * I1) / (1 - alpha));
+      }
+
+      /** The compressive envelope at total strain @p e. */
+      EnvelopePoint
+      compression(const double e, const double l, const double phi) const
+      {
+        const double  fc = phi * f_c, f0 = ratio * fc, e0 = f0 / E;
+        const double  ec = phi * eps_c;
+        EnvelopePoint p;
+        if (e <= e0)
+          {
+            p.stress = E * e;
+            return p;
+          }
+        if (e <= ec)
+          {
+            const double x = (e - e0) / (ec - e0);
+            const double k = E * (ec - e0) / (fc - f0);
+            p.stress = f0 + (fc - f0) * (k * x - x * x) / (1 + (k - 2) * x);
+          }
+        else
+          p.stress = fc * std::exp(-(e - ec) * fc * l / G_c);
+        decompose(e, b_c, p);
+        return p;
+      }
+
+      /** The tensile envelope at total strain @p e. */
+      EnvelopePoint
+      tension(const double e, const double l, const double phi) const
+      {
+        const double  ft = phi * f_t, e0 = ft / E;
+        EnvelopePoint p;
+        if (e <= e0)
+          {
+            p.stress = E * e;
+            return p;
+          }
+        const double w = G_f / (ft * l) - ft / (2 * E);
+        p.stress       = ft * std::exp(-(e - e0) / w);
+        decompose(e, b_t, p);
+        return p;
+      }
+
+      /** Plastic strain and damage of an envelope point (damage capped). */
+      void
+      decompose(const double e, const double b, EnvelopePoint &p) const
+      {
+        p.plastic = b * (e - p.stress / E);
+        p.damage  = 1 - p.stress / (E * (e - p.plastic));
+        if (p.damage > d_max)
+          {
+            p.damage  = d_max;
+            p.plastic = e - p.stress / ((1 - d_max) * E);
+          }
+        p.damage = std::max(p.damage, 0.);
+      }
+
+      /** The stress update (see the file documentation). */
+      void
+      update(const SymmetricTensor<2, 3> &strain,
+             const BrickState            &old,
+             const BrickPoint            &point,
+             BrickState                  &updated,
+             SymmetricTensor<2, 3>       &stress) const
+      {
+        const double phi = point.strength_factor;
+        const double l   = point.characteristic_length;
+        updated          = old;
+        SymmetricTensor<2, 3> plus, minus;
+        double                tau_t, tau_c;
+        split(
+          effective(strain - old.plastic_strain), plus, minus, tau_t, tau_c);
+        double d_t = old.kappa_t > 0 ? tension(old.kappa_t, l, phi).damage : 0.;
+        double d_c =
+          old.kappa_c > 0 ? compression(old.kappa_c, l, phi).damage : 0.;
+        // compression: the envelope strain this trial state corresponds to
+        {
+          const double p_old =
+            old.kappa_c > 0 ? compression(old.kappa_c, l, phi).plastic : 0.;
+          const double e = p_old + tau_c / E;
+          if (e > old.kappa_c && e > ratio * phi * f_c / E && tau_c > 0)
+            {
+              const EnvelopePoint env = compression(e, l, phi);
+              const double        s   = E * (e - env.plastic) / tau_c;
+              updated.plastic_strain += (1 - s) * compliance(minus);
+              minus *= s;
+              updated.kappa_c     = e;
+              updated.threshold_c = E * (e - env.plastic);
+              d_c                 = env.damage;
+            }
+        }
+        {
+          const double p_old =
+            old.kappa_t > 0 ? tension(old.kappa_t, l, phi).plastic : 0.;
+          const double e = p_old + tau_t / E;
+          if (e > old.kappa_t && e > phi * f_t / E && tau_t > 0)
+            {
+              const EnvelopePoint env = tension(e, l, phi);
+              const double        s   = E * (e - env.plastic) / tau_t;
+              updated.plastic_strain += (1 - s) * compliance(plus);
+              plus *= s;
+              updated.kappa_t     = e;
+              updated.threshold_t = E * (e - env.plastic);
+              d_t                 = env.damage;
+            }
+        }
+        // viscous regularisation
+        const double a =
+          mu_visc > 0 && point.time_step > 0 ? mu_visc / point.time_step : 0.;
+        updated.damage_t =
+          std::max((d_t + a * old.damage_t) / (1 + a), old.damage_t);
+        updated.damage_c =
+          std::max((d_c + a * old.damage_c) / (1 + a), old.damage_c);
+        stress = (1 - updated.damage_t) * plus + (1 - updated.damage_c) * minus;
+      }
+
+      /** Central differences of @p function at @p strain. */
+      template <class Function>
+      SymmetricTensor<4, 3>
+      numerical_tangent(const Function              &function,
+                        const SymmetricTensor<2, 3> &strain) const
+      {
+        const double          h = 1e-7 * std::max(strain.norm(), f_t / E);
+        SymmetricTensor<4, 3> C;
+        for (unsigned int i = 0; i < 3; ++i)
+          for (unsigned int j = i; j < 3; ++j)
+            {
+              SymmetricTensor<2, 3> p = strain, m = strain;
+              p[i][j] += h;
+              m[i][j] -= h;
+              // a shear component moves e_ij and e_ji together
+              const SymmetricTensor<2, 3> ds =
+                (function(p) - function(m)) / (2 * h * (i == j ? 1 : 2));
+              for (unsigned int k = 0; k < 3; ++k)
+                for (unsigned int n = k; n < 3; ++n)
+                  C[k][n][i][j] = ds[k][n];
+            }
+        return C;
+      }
+
+      double E = 10e9, nu = 0.15, f_c = 20e6, ratio = 0.4, eps_c = 0.004;
+      double G_c = 20000, b_c = 0.7, f_t = 2e6, G_f = 80, b_t = 0;
+      double rho = 1.16, d_max = 0.99, mu_visc = 0;
+      double alpha = 0, lambda = 0, mu = 0;
+    };
+  } // namespace brickwork
+} // namespace masonry
+
+MASONRY_REGISTER_BRICK_MATERIAL(
+  masonry::brickwork::DamagePlasticityBrick,
+  "damage plasticity",
+  "Damage-plasticity for bricks under cyclic compression (Lubliner et al. "
+  "1989 / Lee & Fenves 1998 measure, explicit update after Faria, Oliver & "
+  "Cervera 1998 and Petracca et al. 2022): effective stress s = C0 : (e - "
+  "e_p) split into positive and negative principal parts; compressive "
+  "measure (sqrt(3 J2(s-)) + alpha I1(s-)) / (1 - alpha), tensile measure "
+  "the largest principal s; uniaxial envelopes in compression (linear, "
+  "CEB-FIP hardening to f_c at eps_c, exponential softening with G_c / l) "
+  "and tension (linear to f_t, exponential softening with G_f / l), each "
+  "split into plastic strain b (e - sigma / E0) and damage; on loading the "
+  "plastic strain grows along C0^-1 : s-+ so that the state lands on the "
+  "envelope (exact in uniaxial stress, no local iterations); stress = (1 - "
+  "d_t) s+ + (1 - d_c) s-, so cracks close with the compressive stiffness "
+  "and unloading follows (1 - d_c) E0 to the plastic strain. l is the cube "
+  "root of the element volume (crack band). The positive part of a "
+  "principal stress is blended smoothly (C1) over its first 0.1 % of f_t "
+  "so that Newton converges where a principal stress is zero. Tangent: "
+  "central differences of the stress update (consistent to O(h^2)); "
+  "elastic points use C0.")
