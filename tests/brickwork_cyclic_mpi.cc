@@ -1,9 +1,10 @@
 /**
  * A small stretcher-bonded wallette with damage-plasticity bricks, bilinear
  * joints, strength scatter and element deletion under two load-unload
- * cycles into the softening branch, on all ranks and on rank 0 alone: the
- * curves agree to 1e-10 (relative to the peak stress), and so do the
- * deleted cells and the cycle results.
+ * cycles into the softening branch (IMPL-EX), on all ranks and on rank 0
+ * alone: the curves agree to the Newton tolerance, 1e-8 of the peak stress
+ * (the partitions sum in a different order; the differences seen are
+ * 2e-10), and the same cells are deleted.
  */
 #include "brickwork_tests.h"
 
@@ -23,7 +24,8 @@ main(int argc, char **argv)
         "set Protocol = cyclic\nset Cycle amplitudes = 0.003, 0.006\n"
         "set Target strain = 0.006\nset Number of steps = 30\n"
         "set Strength scatter = 0.15\nset Random seed = 7\n"
-        "set Deletion strain = 0.004\nset Linear solver = direct\n",
+        "set Deletion strain = 0.0015\nset Linear solver = direct\n"
+        "set Damage integration = implex\n",
         "subsection Bond\nset Pattern = stretcher\nend\n"
         "subsection Brick material\nset Model = damage plasticity\nend\n");
   const masonry::Json all = run("ranks_all", text, MPI_COMM_WORLD);
@@ -41,11 +43,14 @@ main(int argc, char **argv)
           diff = std::max(diff, std::abs(a[i][4] - b[i][4]) / peak);
           same = a[i][10] == b[i][10];
         }
-      check(same && diff < 1e-10,
-            "same curve and deleted cells on 1 and N ranks to 1e-10");
+      check(
+        same && diff < 1e-8,
+        "same curve (to the Newton tolerance 1e-8) and deleted cells on 1 and N ranks");
       check(one.at("max_brick_damage_compression").as_number() > 0.1,
             "the bricks are damaged in compression");
-      check(one.at("status").as_string() == "completed", "completed");
+      check(one.at("status").as_string() == "completed" &&
+              one.at("deleted_cells").as_number() > 0,
+            "completed, with cells deleted");
     }
   MPI_Barrier(MPI_COMM_WORLD);
 }
