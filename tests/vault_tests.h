@@ -55,11 +55,15 @@ namespace vault_tests
     return masonry::Json::parse(text.str());
   }
 
-  /** Print "OK what" or "FAILED what" for a check. */
+  /** Print "OK what" or "FAILED what" for a check (rank 0 of the world
+   * communicator prints, so that a test can run on several ranks). */
   inline bool
   check(const bool ok, const std::string &what)
   {
-    std::cout << (ok ? "OK " : "FAILED ") << what << "\n";
+    int rank = 0;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    if (rank == 0)
+      std::cout << (ok ? "OK " : "FAILED ") << what << "\n";
     return ok;
   }
 
