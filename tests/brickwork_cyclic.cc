@@ -146,6 +146,45 @@ main(int argc, char **argv)
           "hex: loop area = dissipated energy of the cycle (1e-4)");
   }
 
+  // --- the same hexahedron, two cycles per amplitude -----------------------
+  // below the envelope the law unloads and reloads along one line (damage
+  // and plastic strain do not change), so the second cycle meets the first
+  // cycle's unloading at the turning point: the common point and the
+  // stability point are the envelope stress at the amplitude
+  {
+    const std::string repeat =
+      "set Courses = 1\nset Length in bricks = 1\n"
+      "set Elements along the length = 1\nset Elements along the width = "
+      "1\nset Elements along the height = 1\nset Platen lateral restraint "
+      "= free\nset Protocol = cyclic\nset Cycle amplitudes = 0.002, "
+      "0.0045\nset Cycles per amplitude = 2\nset Target strain = "
+      "0.0045\nset Number of steps = 300\nset Unloading stress = 0\n";
+    const masonry::Json r = run("hex_repeat", prm(repeat, material()));
+    check(r.at("status").as_string() == "completed", "hex_repeat: completed");
+    std::ifstream in("results/hex_repeat/envelope.csv");
+    std::string   line;
+    std::getline(in, line);
+    double       error = 0;
+    unsigned int rows  = 0;
+    while (std::getline(in, line))
+      {
+        // amplitude,envelope_strain,envelope,common,stability
+        std::vector<double> v;
+        std::stringstream   cells(line);
+        std::string         cell;
+        while (std::getline(cells, cell, ','))
+          v.push_back(cell.empty() ? -1. : std::stod(cell));
+        const double expected = sigma_c(v.at(0), l);
+        for (const unsigned int k : {2u, 3u, 4u})
+          error = std::max(error, std::abs(v.at(k) - expected) / f_c);
+        ++rows;
+      }
+    check(rows == 2, "hex_repeat: 2 amplitudes in envelope.csv");
+    check(error < 1e-8,
+          "hex_repeat: envelope, common point and stability point = the "
+          "input curve at the amplitude (1e-8 of f_c)");
+  }
+
   // --- one row of cubes in tension: G_f x area for every size ------------
   // (Poisson's ratio 0: uniaxial strain is uniaxial stress, and Newton does
   // not meet the lateral principal stresses at the kink of the split)

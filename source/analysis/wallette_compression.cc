@@ -331,8 +331,21 @@ namespace masonry
           "IMPL-EX step control (dimensionless, > 0): when the largest "
           "difference between the updated and the extrapolated damage of "
           "a step exceeds this, the next step shrinks in proportion (to no "
-          "less than a fifth); below half of it, the step grows by `Step "
-          "growth factor' up to the nominal step.");
+          "less than a fifth, and not below `IMPL-EX minimum step'); below "
+          "half of it, the step grows by `Step growth factor' up to the "
+          "nominal step.");
+        prm.declare_entry(
+          "IMPL-EX minimum step",
+          "0.01",
+          Double(0, 1),
+          "Smallest step the IMPL-EX step control asks for, as a fraction "
+          "of the nominal step (dimensionless, 0 < value <= 1). Where a "
+          "joint or a brick point snaps (its damage jumps whatever the "
+          "step), the damage error stays above the tolerance for any step; "
+          "at this floor such steps are accepted and counted "
+          "(`implex_steps_over_tolerance' in summary.json) instead of "
+          "shrinking the step towards zero. Cut-backs after a failed Newton "
+          "solve are not limited by it.");
         prm.declare_entry("Write plot",
                           "true",
                           Bool(),
@@ -408,6 +421,7 @@ namespace masonry
         s.max_steps            = prm.get_integer("Maximum steps");
         s.implex               = prm.get("Damage integration") == "implex";
         s.implex_tolerance     = positive("IMPL-EX damage tolerance");
+        s.implex_minimum_step  = positive("IMPL-EX minimum step");
         for (unsigned int i = 1; i < amplitudes.size(); ++i)
           AssertThrow(amplitudes[i] > amplitudes[i - 1],
                       ExcParameter("Cycle amplitudes",

@@ -315,6 +315,11 @@ namespace masonry
         double implex_ratio = 0;
         /** IMPL-EX: largest damage error of a step over the run. */
         double implex_max_error = 0;
+        /** IMPL-EX steps accepted at the minimum step with a damage error
+         * above the tolerance. */
+        unsigned int implex_over_tolerance = 0;
+        /** Krylov solves that did not converge and were done by MUMPS. */
+        unsigned int n_direct_fallbacks = 0;
         /** Per active cell: characteristic length, strength factor,
          * deleted. */
         std::vector<double> cell_length, cell_factor;
@@ -999,15 +1004,32 @@ namespace masonry
               }
             SolverControl control(5000,
                                   settings.linear_tolerance * rhs.l2_norm());
-            if (s == "cg amg")
+            try
               {
-                TrilinosWrappers::SolverCG solver(control);
-                solver.solve(matrix, du, rhs, *amg);
+                if (s == "cg amg")
+                  {
+                    TrilinosWrappers::SolverCG solver(control);
+                    solver.solve(matrix, du, rhs, *amg);
+                  }
+                else
+                  {
+                    TrilinosWrappers::SolverGMRES solver(control);
+                    solver.solve(matrix, du, rhs, *amg);
+                  }
               }
-            else
+            catch (const std::exception &)
               {
-                TrilinosWrappers::SolverGMRES solver(control);
-                solver.solve(matrix, du, rhs, *amg);
+                // cracked and crushed regions can make the tangent so badly
+                // conditioned that the Krylov solver stalls or AztecOO
+                // reports a loss of precision: this solve falls back to
+                // MUMPS (the AMG hierarchy stays for the next one)
+                ++n_direct_fallbacks;
+                SolverControl                                  once(1, 0);
+                TrilinosWrappers::SolverDirect::AdditionalData data(
+                  false, "Amesos_Mumps");
+                TrilinosWrappers::SolverDirect fallback(once, data);
+                du = 0;
+                fallback.solve(matrix, du, rhs);
               }
           }
         seconds_solve +=
@@ -1355,7 +1377,8 @@ namespace masonry
                       cycles[std::min<std::size_t>((k + 1) * n_rep,
                                                    cycles.size()) -
                              1];
-                    double common = 0;
+                    // empty in the CSV where there is no second cycle
+                    double common = std::numeric_limits<double>::quiet_NaN();
                     if (n_rep > 1 && k * n_rep + 1 < cycles.size())
                       {
                         // reloading branch of the 2nd cycle against the
@@ -1392,8 +1415,10 @@ namespace masonry
                           }
                       }
                     out << first.amplitude << "," << first.strain_at_peak << ","
-                        << first.peak_stress << "," << common << ","
-                        << lastc.peak_stress << "\n";
+                        << first.peak_stress << ",";
+                    if (std::isfinite(common))
+                      out << common;
+                    out << "," << lastc.peak_stress << "\n";
                   }
               }
             context.output.file("envelope.csv");
@@ -1888,7 +1913,8 @@ namespace masonry
           const types::global_dof_index n_dofs = dof_handler.n_dofs();
           ar &n_ranks                  &n_dofs;
           ar &progress &curve &total_newton &total_cutbacks &n_solves &n_deleted
-            &deleted &face_deleted &orphans &history_old         &history_older;
+            &deleted &face_deleted &orphans &history_old &history_older;
+          ar &implex_max_error &implex_over_tolerance    &n_direct_fallbacks;
           std::vector<std::pair<types::global_dof_index, double>> values;
           for (const auto i : owned)
             values.emplace_back(i, u[i]);
@@ -1942,7 +1968,8 @@ namespace masonry
                                        "parameters and number of ranks"));
             ar &progress &curve &total_newton &total_cutbacks &n_solves
               &n_deleted &deleted &face_deleted &orphans &history_old
-                &history_older;
+                                                        &history_older;
+            ar &implex_max_error &implex_over_tolerance &n_direct_fallbacks;
             history_new = history_old;
             std::vector<std::pair<types::global_dof_index, double>> values;
             ar                                                     &values;
@@ -2196,9 +2223,19 @@ namespace masonry
               {
                 // IMPL-EX step control on the damage error of the step
                 if (implex_error > settings.implex_tolerance)
-                  increment *=
-                    std::max(0.2,
-                             0.9 * settings.implex_tolerance / implex_error);
+                  {
+                    // shrink, but not below the floor (and never raise a
+                    // step that a cut-back made smaller still)
+                    const double floor = settings.implex_minimum_step * nominal;
+                    if (increment <= floor * (1 + 1e-12))
+                      ++implex_over_tolerance;
+                    increment =
+                      std::max(increment *
+                                 std::max(0.2,
+                                          0.9 * settings.implex_tolerance /
+                                            implex_error),
+                               std::min(increment, floor));
+                  }
                 else if (implex_error < 0.5 * settings.implex_tolerance)
                   increment = std::min(increment * settings.growth, nominal);
               }
@@ -2254,15 +2291,19 @@ namespace masonry
         summary["status"] = status;
         if (!message.empty())
           summary["message"] = message;
-        summary["steps"]                 = progress.step;
-        summary["newton_iterations"]     = total_newton;
-        summary["cut_backs"]             = total_cutbacks;
-        summary["linear_solves"]         = n_solves;
-        summary["matrix_assemblies"]     = n_matrix_assemblies;
-        summary["factorisations_reused"] = n_factorisations_reused;
-        summary["deleted_cells"]         = n_deleted;
+        summary["steps"]                   = progress.step;
+        summary["newton_iterations"]       = total_newton;
+        summary["cut_backs"]               = total_cutbacks;
+        summary["linear_solves"]           = n_solves;
+        summary["matrix_assemblies"]       = n_matrix_assemblies;
+        summary["factorisations_reused"]   = n_factorisations_reused;
+        summary["deleted_cells"]           = n_deleted;
+        summary["direct_solver_fallbacks"] = n_direct_fallbacks;
         if (settings.implex)
-          summary["implex_max_damage_error"] = implex_max_error;
+          {
+            summary["implex_max_damage_error"]     = implex_max_error;
+            summary["implex_steps_over_tolerance"] = implex_over_tolerance;
+          }
         if (!material.is_linear())
           {
             const unsigned long all = n_material_cells + n_elastic_cells;

@@ -121,6 +121,10 @@ namespace masonry
       /** IMPL-EX step control: largest allowed difference between the
        * extrapolated and the updated damage in a step. */
       double implex_tolerance = 0.05;
+      /** IMPL-EX step control never shrinks the step below this fraction
+       * of the nominal step (a softening snap keeps the damage error large
+       * however small the step). */
+      double implex_minimum_step = 0.01;
       /** Stop (status `interrupted', checkpoint written) after this many
        * converged steps of this run (0: no limit). */
       unsigned int max_steps = 0;
