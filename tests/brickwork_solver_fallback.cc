@@ -4,10 +4,10 @@
  * damage-plasticity bricks, bilinear joints, strength scatter (seed 2),
  * element deletion and IMPL-EX, cycled to 2.7 times the strain at peak.
  * Past the peak GMRES-AMG stops with AztecOO's `loss of precision' (before
- * the fallback this run ended `not converged'); each such solve is redone
- * by MUMPS. Checked against an independent run with the direct solver
- * throughout: the same curve to 1e-6 of the peak stress (both converge to
- * the Newton tolerance) and the same deleted cells.
+ * the fallback this run ended `not converged'); that solve and all later
+ * ones are done by MUMPS. Checked against an independent run with the direct
+ * solver throughout: the same curve to 1e-6 of the peak stress (both converge
+ * to the Newton tolerance) and the same deleted cells.
  */
 #include "brickwork_tests.h"
 

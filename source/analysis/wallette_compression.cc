@@ -148,7 +148,12 @@ namespace masonry
           "`direct klu': Amesos KLU (serial, gathers the matrix); `cg amg': "
           "conjugate gradients with Trilinos ML algebraic multigrid (for "
           "symmetric tangents: elastic joints); `gmres amg': GMRES with the "
-          "same preconditioner (any tangent).");
+          "same preconditioner (any tangent). A Krylov solve that fails "
+          "(1000 iterations, or AztecOO's loss of precision on a cracked "
+          "tangent) is redone by MUMPS, and MUMPS solves the rest of the "
+          "run (damage does not heal); summary.json: "
+          "direct_solver_fallbacks. Below some 10^5 DOFs `direct' is "
+          "usually the fastest for damaged wallettes.");
         prm.declare_entry("Linear solver tolerance",
                           "1e-10",
                           Double(0),

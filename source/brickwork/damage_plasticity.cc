@@ -196,6 +196,7 @@ namespace masonry
         alpha  = (rho - 1) / (2 * rho - 1);
         lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
         mu     = E / (2 * (1 + nu));
+        C0     = elastic_stiffness();
       }
 
       bool
@@ -272,6 +273,16 @@ namespace masonry
       }
 
       void
+      update_state(const SymmetricTensor<2, 3> &strain,
+                   const BrickState            &old,
+                   const BrickPoint            &point,
+                   BrickState                  &updated,
+                   SymmetricTensor<2, 3>       &stress) const override
+      {
+        update(strain, old, point, updated, stress);
+      }
+
+      void
       evaluate_extrapolated(const SymmetricTensor<2, 3> &strain,
                             const BrickState            &old,
                             const BrickState            &older,
@@ -289,14 +300,15 @@ namespace masonry
         const SymmetricTensor<2, 3> plastic =
           old.plastic_strain +
           ratio_t * (old.plastic_strain - older.plastic_strain);
-        auto function = [&](const SymmetricTensor<2, 3> &e) {
-          SymmetricTensor<2, 3> plus, minus;
-          double                tau_t, tau_c;
-          split(effective(e - plastic), plus, minus, tau_t, tau_c);
-          return SymmetricTensor<2, 3>((1 - d_t) * plus + (1 - d_c) * minus);
-        };
-        stress  = function(strain);
-        tangent = numerical_tangent(function, strain);
+        // stress = (1 - d_t) P(s) + (1 - d_c) (s - P(s)), s = C0 : (e - e_p)
+        // with everything but e frozen, so the tangent is exact and closed:
+        // ((d_c - d_t) dP/ds + (1 - d_c) I) : C0
+        const SymmetricTensor<2, 3> s = effective(strain - plastic);
+        SymmetricTensor<4, 3>       dP;
+        const SymmetricTensor<2, 3> P = positive_part(s, &dP);
+        stress                        = (1 - d_t) * P + (1 - d_c) * (s - P);
+        tangent =
+          ((d_c - d_t) * dP + (1 - d_c) * dealii::identity_tensor<3>()) * C0;
       }
 
     private:
@@ -314,6 +326,65 @@ namespace masonry
       {
         return (1 + nu) / E * s -
                nu / E * dealii::trace(s) * dealii::unit_symmetric_tensor<3>();
+      }
+
+      /**
+       * The positive part P(s) = sum h(s_i) n_i (x) n_i of @p s, with the
+       * blended ramp h of split(), and, if @p derivative is given, dP/ds:
+       * sum h'(s_i) M_i (x) M_i + sum_{i<j} 2 theta_ij G_ij (x) G_ij, with
+       * M_i = n_i (x) n_i, G_ij = sym(n_i (x) n_j) and theta_ij the divided
+       * difference (h(s_i) - h(s_j)) / (s_i - s_j) (the mean slope for
+       * equal principal values).
+       */
+      SymmetricTensor<2, 3>
+      positive_part(const SymmetricTensor<2, 3> &s,
+                    SymmetricTensor<4, 3>       *derivative) const
+      {
+        SymmetricTensor<2, 3> P;
+        if (derivative)
+          *derivative = 0;
+        if (s.norm() == 0)
+          return P;
+        const double delta = 1e-3 * f_t;
+        auto         h     = [&](const double x) {
+          return x <= 0     ? 0. :
+                             x >= delta ? x :
+                                          x * x * (2 / delta - x / (delta * delta));
+        };
+        auto slope = [&](const double x) {
+          return x <= 0     ? 0. :
+                 x >= delta ? 1. :
+                              x * (4 - 3 * x / delta) / delta;
+        };
+        const auto            eig = dealii::eigenvectors(s);
+        SymmetricTensor<2, 3> M[3];
+        for (unsigned int i = 0; i < 3; ++i)
+          {
+            M[i] = dealii::symmetrize(
+              dealii::outer_product(eig[i].second, eig[i].second));
+            P += h(eig[i].first) * M[i];
+          }
+        if (derivative)
+          {
+            const double scale =
+              std::max(std::abs(eig[0].first), std::abs(eig[2].first));
+            for (unsigned int i = 0; i < 3; ++i)
+              {
+                *derivative +=
+                  slope(eig[i].first) * dealii::outer_product(M[i], M[i]);
+                for (unsigned int j = i + 1; j < 3; ++j)
+                  {
+                    const double a = eig[i].first, b = eig[j].first;
+                    const double theta = std::abs(a - b) <= 1e-10 * scale ?
+                                           0.5 * (slope(a) + slope(b)) :
+                                           (h(a) - h(b)) / (a - b);
+                    const SymmetricTensor<2, 3> G = dealii::symmetrize(
+                      dealii::outer_product(eig[i].second, eig[j].second));
+                    *derivative += 2 * theta * dealii::outer_product(G, G);
+                  }
+              }
+          }
+        return P;
       }
 
       /** Spectral split of @p s and the equivalent stresses. */
@@ -498,6 +569,8 @@ namespace masonry
       double G_c = 20000, b_c = 0.7, f_t = 2e6, G_f = 80, b_t = 0;
       double rho = 1.16, d_max = 0.99, mu_visc = 0;
       double alpha = 0, lambda = 0, mu = 0;
+      /** The initial stiffness. */
+      SymmetricTensor<4, 3> C0;
     };
   } // namespace brickwork
 } // namespace masonry

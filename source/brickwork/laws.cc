@@ -381,6 +381,17 @@ namespace masonry
     }
 
     void
+    BrickMaterial::update_state(const dealii::SymmetricTensor<2, 3> &strain,
+                                const BrickState                    &old,
+                                const BrickPoint                    &point,
+                                BrickState                          &updated,
+                                dealii::SymmetricTensor<2, 3> &stress) const
+    {
+      dealii::SymmetricTensor<4, 3> tangent;
+      evaluate(strain, old, point, updated, stress, tangent);
+    }
+
+    void
     BrickMaterial::check_point(const BrickPoint &) const
     {}
 

@@ -35,6 +35,9 @@
 #include <boost/serialization/utility.hpp>
 #include <boost/serialization/vector.hpp>
 
+#include <Amesos.h>
+#include <Amesos_BaseSolver.h>
+#include <Epetra_LinearProblem.h>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -320,6 +323,8 @@ namespace masonry
         unsigned int implex_over_tolerance = 0;
         /** Krylov solves that did not converge and were done by MUMPS. */
         unsigned int n_direct_fallbacks = 0;
+        /** A Krylov solve failed: the rest of the run uses MUMPS. */
+        bool krylov_abandoned = false;
         /** Per active cell: characteristic length, strength factor,
          * deleted. */
         std::vector<double> cell_length, cell_factor;
@@ -341,11 +346,17 @@ namespace masonry
          * whether the kept solver was set up for it, and the kept solvers. */
         bool initial_tangent = false, solver_is_initial = false;
         /** A linear model's matrix is assembled once (until deletions). */
-        bool                           matrix_valid            = false;
-        unsigned int                   n_factorisations_reused = 0;
-        unsigned int                   n_matrix_assemblies     = 0;
-        std::unique_ptr<SolverControl> direct_control;
-        std::unique_ptr<TrilinosWrappers::SolverDirect>    direct;
+        bool         matrix_valid            = false;
+        unsigned int n_factorisations_reused = 0;
+        unsigned int n_matrix_assemblies     = 0;
+        /** The direct solver: Amesos on the matrix, whose sparsity never
+         * changes, so the symbolic analysis (ordering) is done once and
+         * every new tangent only costs a numeric factorisation. */
+        Epetra_LinearProblem               direct_problem;
+        std::unique_ptr<Amesos_BaseSolver> direct;
+        /** Sets up @p direct (name: Amesos_Mumps or Amesos_Klu). */
+        void
+        make_direct(const std::string &name);
         std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
       };
 
@@ -968,19 +979,26 @@ namespace masonry
         const bool reuse = initial_tangent && solver_is_initial;
         if (reuse)
           ++n_factorisations_reused;
-        if (s == "direct" || s == "direct klu")
+        const auto direct_solve = [&](const bool factorise) {
+          if (factorise)
+            {
+              AssertThrow(direct->NumericFactorization() == 0,
+                          ExcMessage("the direct solver could not factorise "
+                                     "the tangent (singular matrix?)"));
+              solver_is_initial = initial_tangent;
+            }
+          direct_problem.SetLHS(&du.trilinos_vector());
+          direct_problem.SetRHS(
+            const_cast<Epetra_MultiVector *>(&rhs.trilinos_vector()));
+          AssertThrow(direct->Solve() == 0,
+                      ExcMessage("the direct solver failed"));
+        };
+        if (s == "direct" || s == "direct klu" || krylov_abandoned)
           {
-            if (!reuse)
-              {
-                direct_control = std::make_unique<SolverControl>(1, 0);
-                TrilinosWrappers::SolverDirect::AdditionalData data(
-                  false, s == "direct" ? "Amesos_Mumps" : "Amesos_Klu");
-                direct = std::make_unique<TrilinosWrappers::SolverDirect>(
-                  *direct_control, data);
-                direct->initialize(matrix);
-                solver_is_initial = initial_tangent;
-              }
-            direct->solve(du, rhs);
+            const bool fresh = !direct;
+            if (fresh)
+              make_direct(s == "direct klu" ? "Amesos_Klu" : "Amesos_Mumps");
+            direct_solve(fresh || !reuse);
           }
         else
           {
@@ -1002,7 +1020,10 @@ namespace masonry
                 amg->initialize(matrix, data);
                 solver_is_initial = initial_tangent;
               }
-            SolverControl control(5000,
+            // AMG-preconditioned Krylov needs tens of iterations on an
+            // intact or moderately damaged tangent; a solve that needs more
+            // than this is stalling
+            SolverControl control(1000,
                                   settings.linear_tolerance * rhs.l2_norm());
             try
               {
@@ -1021,19 +1042,35 @@ namespace masonry
               {
                 // cracked and crushed regions can make the tangent so badly
                 // conditioned that the Krylov solver stalls or AztecOO
-                // reports a loss of precision: this solve falls back to
-                // MUMPS (the AMG hierarchy stays for the next one)
+                // reports a loss of precision. Damage does not heal, so the
+                // tangents of the rest of the run are no better: this solve
+                // and all later ones use MUMPS
                 ++n_direct_fallbacks;
-                SolverControl                                  once(1, 0);
-                TrilinosWrappers::SolverDirect::AdditionalData data(
-                  false, "Amesos_Mumps");
-                TrilinosWrappers::SolverDirect fallback(once, data);
+                krylov_abandoned = true;
+                amg.reset();
+                pcout << "  note: the Krylov solver failed on the damaged "
+                         "tangent; MUMPS solves from here on\n";
+                make_direct("Amesos_Mumps");
                 du = 0;
-                fallback.solve(matrix, du, rhs);
+                direct_solve(true);
               }
           }
         seconds_solve +=
           std::chrono::duration<double>(Clock::now() - start).count();
+      }
+
+      void
+      Model::make_direct(const std::string &name)
+      {
+        direct_problem.SetOperator(
+          const_cast<Epetra_CrsMatrix *>(&matrix.trilinos_matrix()));
+        Amesos factory;
+        direct.reset(factory.Create(name.c_str(), direct_problem));
+        AssertThrow(direct != nullptr,
+                    ExcMessage(name + " is not available in this Trilinos"));
+        AssertThrow(direct->SymbolicFactorization() == 0,
+                    ExcMessage("the symbolic analysis of the direct solver "
+                               "failed"));
       }
 
       void
@@ -1653,7 +1690,6 @@ namespace masonry
             std::vector<SymmetricTensor<2, 3>> eps(8);
             const FEValuesExtractors::Vector   displacement(0);
             SymmetricTensor<2, 3>              stress;
-            SymmetricTensor<4, 3>              C;
             for (const auto &cell : dof_handler.active_cell_iterators())
               if (cell->is_locally_owned() &&
                   !deleted[cell->active_cell_index()])
@@ -1671,8 +1707,8 @@ namespace masonry
                   const auto updated          = states_new.get_data(cell);
                   for (unsigned int q = 0; q < 8; ++q)
                     {
-                      material.evaluate(
-                        eps[q], *old[q], point, *updated[q], stress, C);
+                      material.update_state(
+                        eps[q], *old[q], point, *updated[q], stress);
                       error =
                         std::max({error,
                                   std::abs(updated[q]->damage_t -
@@ -1914,7 +1950,8 @@ namespace masonry
           ar &n_ranks                  &n_dofs;
           ar &progress &curve &total_newton &total_cutbacks &n_solves &n_deleted
             &deleted &face_deleted &orphans &history_old &history_older;
-          ar &implex_max_error &implex_over_tolerance    &n_direct_fallbacks;
+          ar &implex_max_error &implex_over_tolerance &n_direct_fallbacks
+            &krylov_abandoned;
           std::vector<std::pair<types::global_dof_index, double>> values;
           for (const auto i : owned)
             values.emplace_back(i, u[i]);
@@ -1968,8 +2005,9 @@ namespace masonry
                                        "parameters and number of ranks"));
             ar &progress &curve &total_newton &total_cutbacks &n_solves
               &n_deleted &deleted &face_deleted &orphans &history_old
-                                                        &history_older;
-            ar &implex_max_error &implex_over_tolerance &n_direct_fallbacks;
+                &history_older;
+            ar &implex_max_error &implex_over_tolerance &n_direct_fallbacks
+              &krylov_abandoned;
             history_new = history_old;
             std::vector<std::pair<types::global_dof_index, double>> values;
             ar                                                     &values;

@@ -129,6 +129,19 @@ namespace masonry
                dealii::SymmetricTensor<4, 3>       &tangent) const;
 
       /**
+       * Stress (Pa) and new state as evaluate(), without the tangent: the
+       * IMPL-EX implicit update at the end of a step needs no tangent. The
+       * default calls evaluate() and drops the tangent; a law whose tangent
+       * is costly (numerical differentiation) overrides it.
+       */
+      virtual void
+      update_state(const dealii::SymmetricTensor<2, 3> &strain,
+                   const BrickState                    &old,
+                   const BrickPoint                    &point,
+                   BrickState                          &updated,
+                   dealii::SymmetricTensor<2, 3>       &stress) const;
+
+      /**
        * IMPL-EX (Oliver, Huespe & Cante 2008): stress and tangent at
        * @p strain with the internal variables extrapolated linearly in
        * pseudo-time from the two last converged states, @p old + @p ratio
