@@ -8,6 +8,13 @@
  * ones are done by MUMPS. Checked against an independent run with the direct
  * solver throughout: the same curve to 1e-6 of the peak stress (both converge
  * to the Newton tolerance) and the same deleted cells.
+ *
+ * The same direct run checks the IMPL-EX step floor: where joints snap the
+ * damage error stays above the tolerance for any step, and the step
+ * control must then hold the step at `IMPL-EX minimum step' (0.01) times
+ * the nominal step (0.008 H / 40) instead of shrinking it towards zero:
+ * every loading step but the last of a leg (cut to the amplitude) is at
+ * least the floor, and some steps sit at it.
  */
 #include "brickwork_tests.h"
 
@@ -64,4 +71,26 @@ main(int argc, char **argv)
   check(same && diff < 1e-6,
         "the same curve as the direct solver (1e-6 of the peak) and the same "
         "deleted cells");
+
+  // the IMPL-EX step floor (columns: 1 displacement, 8 cycle, 9 unloading)
+  const double floor = 0.01 * 0.008 * direct.at("height").as_number() / 40;
+  check(direct.at("cut_backs").as_number() == 0,
+        "direct: no cut-backs (every step size is the step control's)");
+  double       smallest = 1e300;
+  unsigned int at_floor = 0;
+  for (unsigned int j = 2; j + 1 < b.size(); ++j)
+    if (b[j - 1][9] == 0 && b[j][9] == 0 && b[j + 1][9] == 0 &&
+        b[j - 1][8] == b[j][8] && b[j + 1][8] == b[j][8])
+      {
+        // the loading step to row j, which is not the last of its leg
+        const double step = b[j][1] - b[j - 1][1];
+        smallest          = std::min(smallest, step);
+        if (step < 1.01 * floor)
+          ++at_floor;
+      }
+  check(smallest > 0.999 * floor,
+        "IMPL-EX: no loading step below the minimum step (0.01 x nominal)");
+  check(at_floor > 0 &&
+          direct.at("implex_steps_over_tolerance").as_number() > 0,
+        "IMPL-EX: some steps are held at the minimum step");
 }
