@@ -335,10 +335,11 @@ namespace masonry
           Double(0),
           "IMPL-EX step control (dimensionless, > 0): when the largest "
           "difference between the updated and the extrapolated damage of "
-          "a step exceeds this, the next step shrinks in proportion (to no "
-          "less than a fifth, and not below `IMPL-EX minimum step'); below "
-          "half of it, the step grows by `Step growth factor' up to the "
-          "nominal step.");
+          "a step exceeds this, the step is redone smaller in proportion "
+          "(to no less than a fifth, and not below `IMPL-EX minimum step'; "
+          "`implex_steps_redone' in summary.json); below half of it, the "
+          "next step grows by `Step growth factor' up to the nominal "
+          "step.");
         prm.declare_entry(
           "IMPL-EX minimum step",
           "0.01",

@@ -321,6 +321,8 @@ namespace masonry
         /** IMPL-EX steps accepted at the minimum step with a damage error
          * above the tolerance. */
         unsigned int implex_over_tolerance = 0;
+        /** IMPL-EX steps redone smaller (damage error over the tolerance). */
+        unsigned int implex_rejected = 0;
         /** Krylov solves that did not converge and were done by MUMPS. */
         unsigned int n_direct_fallbacks = 0;
         /** A Krylov solve failed: the rest of the run uses MUMPS. */
@@ -1951,7 +1953,7 @@ namespace masonry
           ar &progress &curve &total_newton &total_cutbacks &n_solves &n_deleted
             &deleted &face_deleted &orphans &history_old &history_older;
           ar &implex_max_error &implex_over_tolerance &n_direct_fallbacks
-            &krylov_abandoned;
+            &krylov_abandoned &implex_rejected;
           std::vector<std::pair<types::global_dof_index, double>> values;
           for (const auto i : owned)
             values.emplace_back(i, u[i]);
@@ -2007,7 +2009,7 @@ namespace masonry
               &n_deleted &deleted &face_deleted &orphans &history_old
                 &history_older;
             ar &implex_max_error &implex_over_tolerance &n_direct_fallbacks
-              &krylov_abandoned;
+              &krylov_abandoned &implex_rejected;
             history_new = history_old;
             std::vector<std::pair<types::global_dof_index, double>> values;
             ar                                                     &values;
@@ -2199,7 +2201,30 @@ namespace masonry
             double implex_error  = 0;
             if (settings.implex)
               {
-                implex_error     = implex_update();
+                implex_error = implex_update();
+                // a step whose damage error is over the tolerance is redone
+                // smaller, down to the floor: otherwise the first step that
+                // re-enters the envelope (elastic, nothing to extrapolate
+                // from) overshoots the cycle peak by up to E0 x the step
+                const double taken = std::abs(next - applied);
+                const double floor = settings.implex_minimum_step * nominal;
+                if (implex_error > settings.implex_tolerance &&
+                    taken > floor * (1 + 1e-12))
+                  {
+                    u = u_converged;
+                    ++implex_rejected;
+                    increment =
+                      std::max(taken *
+                                 std::max(0.2,
+                                          0.9 * settings.implex_tolerance /
+                                            implex_error),
+                               floor);
+                    if (settings.progress)
+                      pcout << "  IMPL-EX: step redone (damage error "
+                            << implex_error << "), step " << increment
+                            << " m\n";
+                    continue;
+                  }
                 implex_max_error = std::max(implex_max_error, implex_error);
               }
             accept_step();
@@ -2262,11 +2287,11 @@ namespace masonry
                 // IMPL-EX step control on the damage error of the step
                 if (implex_error > settings.implex_tolerance)
                   {
-                    // shrink, but not below the floor (and never raise a
-                    // step that a cut-back made smaller still)
+                    // accepted only at (or below) the floor: shrink, but
+                    // not below the floor (and never raise a step that a
+                    // cut-back made smaller still)
                     const double floor = settings.implex_minimum_step * nominal;
-                    if (increment <= floor * (1 + 1e-12))
-                      ++implex_over_tolerance;
+                    ++implex_over_tolerance;
                     increment =
                       std::max(increment *
                                  std::max(0.2,
@@ -2341,6 +2366,7 @@ namespace masonry
           {
             summary["implex_max_damage_error"]     = implex_max_error;
             summary["implex_steps_over_tolerance"] = implex_over_tolerance;
+            summary["implex_steps_redone"]         = implex_rejected;
           }
         if (!material.is_linear())
           {
