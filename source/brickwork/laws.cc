@@ -174,11 +174,25 @@ namespace masonry
                           "criterion G_c = G_I + (G_II - G_I) (beta^2 / (1 "
                           "+ beta^2))^eta, beta = slip / normal opening "
                           "(dimensionless, > 0).");
+        prm.declare_entry(
+          "Maximum damage",
+          "1",
+          dealii::Patterns::Double(0, 1),
+          "Cap of the damage that degrades the opening and shear "
+          "stiffnesses (dimensionless, 0 < value <= 1): a fully debonded "
+          "joint keeps (1 - this) of its penalties. This law has no "
+          "friction, so with 1 a brick held only by debonded joints can "
+          "slide freely and the tangent is singular; a cap such as 0.9999 "
+          "keeps it regular (residual traction 1e-4 k delta). The damage "
+          "itself (output, energy) is not capped.");
       }
 
       void
       parse_parameters(dealii::ParameterHandler &prm) override
       {
+        d_max = prm.get_double("Maximum damage");
+        AssertThrow(d_max > 0 && d_max <= 1,
+                    ExcParameter("Maximum damage", "must be in (0, 1]"));
         f_t           = prm.get_double("Tensile strength");
         c             = prm.get_double("Cohesion");
         G_I           = prm.get_double("Mode I fracture energy");
@@ -267,14 +281,15 @@ namespace masonry
         const double d = (updated.damage_inviscid + a * old.damage) / (1 + a);
         updated.damage = d;
         // no damage of the normal stiffness in compression
-        const double f[3] = {jump[0] > 0 ? 1 - d : 1., 1 - d, 1 - d};
+        const double dc   = std::min(d, d_max);
+        const double f[3] = {jump[0] > 0 ? 1 - dc : 1., 1 - dc, 1 - dc};
         for (unsigned int i = 0; i < 3; ++i)
           {
             t[i] = f[i] * k[i] * jump[i];
             for (unsigned int j = 0; j < 3; ++j)
               tangent[i][j] = (i == j ? f[i] * k[i] : 0);
           }
-        if (loading && trial < 1)
+        if (loading && trial < 1 && d < d_max)
           {
             // loading: derivative of the damage by central differences
             // of the closed-form damage function
@@ -310,9 +325,10 @@ namespace masonry
         // the damage extrapolated in pseudo-time, frozen within the step:
         // the joint is linear but for the contact switch of the normal
         const double d =
-          std::clamp(old.damage + ratio * (old.damage - older.damage),
-                     old.damage,
-                     1.);
+          std::min(std::clamp(old.damage + ratio * (old.damage - older.damage),
+                              old.damage,
+                              1.),
+                   d_max);
         const double k[3] = {normal_stiffness,
                              shear_stiffness,
                              shear_stiffness};
@@ -326,7 +342,7 @@ namespace masonry
       }
 
     private:
-      double f_t = 0, c = 0, G_I = 0, G_II = 0, eta = 2;
+      double f_t = 0, c = 0, G_I = 0, G_II = 0, eta = 2, d_max = 1;
     };
 
     // ---------------------------------------------------------------------
