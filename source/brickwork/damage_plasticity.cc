@@ -329,8 +329,14 @@ namespace masonry
       }
 
       /**
-       * The positive part P(s) = sum h(s_i) n_i (x) n_i of @p s, with the
-       * blended ramp h of split(), and, if @p derivative is given, dP/ds:
+       * The positive part P(s) = sum h(s_i) n_i (x) n_i of @p s, where h is
+       * <x>+ blended over (0, delta = 0.001 f_t) by 2 x^2 / delta - x^3 /
+       * delta^2 (C1, exact outside the band): a principal stress that is
+       * zero at equilibrium (the free lateral directions of uniaxial
+       * loading) sits at the kink of the split, where Newton with a
+       * discontinuous tangent stalls. @p largest, if given, receives the
+       * largest principal value's positive part <s_1>+. If @p derivative
+       * is given, it receives dP/ds:
        * sum h'(s_i) M_i (x) M_i + sum_{i<j} 2 theta_ij G_ij (x) G_ij, with
        * M_i = n_i (x) n_i, G_ij = sym(n_i (x) n_j) and theta_ij the divided
        * difference (h(s_i) - h(s_j)) / (s_i - s_j) (the mean slope for
@@ -338,11 +344,14 @@ namespace masonry
        */
       SymmetricTensor<2, 3>
       positive_part(const SymmetricTensor<2, 3> &s,
-                    SymmetricTensor<4, 3>       *derivative) const
+                    SymmetricTensor<4, 3>       *derivative,
+                    double                      *largest = nullptr) const
       {
         SymmetricTensor<2, 3> P;
         if (derivative)
           *derivative = 0;
+        if (largest)
+          *largest = 0;
         if (s.norm() == 0)
           return P;
         const double delta = 1e-3 * f_t;
@@ -356,7 +365,9 @@ namespace masonry
                  x >= delta ? 1. :
                               x * (4 - 3 * x / delta) / delta;
         };
-        const auto            eig = dealii::eigenvectors(s);
+        const auto eig = dealii::eigenvectors(s);
+        if (largest)
+          *largest = std::max(eig[0].first, 0.);
         SymmetricTensor<2, 3> M[3];
         for (unsigned int i = 0; i < 3; ++i)
           {
@@ -395,31 +406,7 @@ namespace masonry
             double                      &tau_t,
             double                      &tau_c) const
       {
-        plus = 0;
-        if (s.norm() == 0)
-          {
-            minus = 0;
-            tau_t = tau_c = 0;
-            return;
-          }
-        const auto eig = dealii::eigenvectors(s);
-        tau_t          = std::max(eig[0].first, 0.);
-        // <x>+ blended over (0, delta) by 2 x^2 / delta - x^3 / delta^2
-        // (C1, exact outside the band): a principal stress that is zero at
-        // equilibrium (the free lateral directions of uniaxial loading)
-        // sits at the kink of the split, where Newton with a
-        // discontinuous tangent stalls
-        const double delta = 1e-3 * f_t;
-        for (unsigned int i = 0; i < 3; ++i)
-          if (eig[i].first > 0)
-            {
-              const double x = eig[i].first;
-              const double p =
-                x >= delta ? x : x * x * (2 / delta - x / (delta * delta));
-              plus +=
-                p * dealii::symmetrize(
-                      dealii::outer_product(eig[i].second, eig[i].second));
-            }
+        plus            = positive_part(s, nullptr, &tau_t);
         minus           = s - plus;
         const double I1 = dealii::trace(minus);
         const double J2 =

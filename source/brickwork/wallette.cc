@@ -2078,6 +2078,12 @@ namespace masonry
         const double               nominal =
           std::abs(settings.target_displacement / settings.n_steps);
         progress.increment = nominal;
+        // IMPL-EX step control: the smallest step it asks for, and a step
+        // shrunk in proportion to the damage error (to no less than a fifth)
+        const double implex_floor = settings.implex_minimum_step * nominal;
+        const auto   shrunk       = [&](const double step, const double error) {
+          return step * std::max(0.2, 0.9 * settings.implex_tolerance / error);
+        };
         if (settings.resume)
           {
             load_checkpoint();
@@ -2207,18 +2213,13 @@ namespace masonry
                 // re-enters the envelope (elastic, nothing to extrapolate
                 // from) overshoots the cycle peak by up to E0 x the step
                 const double taken = std::abs(next - applied);
-                const double floor = settings.implex_minimum_step * nominal;
                 if (implex_error > settings.implex_tolerance &&
-                    taken > floor * (1 + 1e-12))
+                    taken > implex_floor * (1 + 1e-12))
                   {
                     u = u_converged;
                     ++implex_rejected;
                     increment =
-                      std::max(taken *
-                                 std::max(0.2,
-                                          0.9 * settings.implex_tolerance /
-                                            implex_error),
-                               floor);
+                      std::max(shrunk(taken, implex_error), implex_floor);
                     if (settings.progress)
                       pcout << "  IMPL-EX: step redone (damage error "
                             << implex_error << "), step " << increment
@@ -2290,14 +2291,9 @@ namespace masonry
                     // accepted only at (or below) the floor: shrink, but
                     // not below the floor (and never raise a step that a
                     // cut-back made smaller still)
-                    const double floor = settings.implex_minimum_step * nominal;
                     ++implex_over_tolerance;
-                    increment =
-                      std::max(increment *
-                                 std::max(0.2,
-                                          0.9 * settings.implex_tolerance /
-                                            implex_error),
-                               std::min(increment, floor));
+                    increment = std::max(shrunk(increment, implex_error),
+                                         std::min(increment, implex_floor));
                   }
                 else if (implex_error < 0.5 * settings.implex_tolerance)
                   increment = std::min(increment * settings.growth, nominal);
