@@ -313,6 +313,17 @@ namespace masonry
           }
       }
 
+      bool
+      is_elastic(const Local3           &jump,
+                 const InterfaceHistory &old,
+                 const InterfacePoint   &point) const override
+      {
+        // intact and below the damage onset: evaluate() keeps d = 0 (also
+        // with viscosity) and the extrapolated damage of intact states is 0
+        return old.damage == 0 && old.damage_inviscid == 0 &&
+               damage(jump, point.strength_factor) == 0;
+      }
+
       void
       evaluate_extrapolated(const Local3           &jump,
                             const InterfaceHistory &old,

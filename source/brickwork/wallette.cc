@@ -206,6 +206,20 @@ namespace masonry
          * linear model keeps the one it assembled first). */
         void
         assemble(const bool need_matrix);
+        /** Openings (local frame) at the interface points of @p face
+         * from its 24 DOF values @p ue. */
+        void
+        interface_jumps(const InterfaceFace   &face,
+                        const Vector<double>  &ue,
+                        std::array<Local3, 4> &jumps) const;
+        /** Local force vector and (if @p ki) tangent of @p face from the
+         * tractions and tangents at its points. */
+        void
+        interface_local(const InterfaceFace          &face,
+                        const std::array<Local3, 4>  &tractions,
+                        const std::array<Local33, 4> &tangents,
+                        Vector<double>               &fi,
+                        FullMatrix<double>           *ki) const;
         bool
         solve_step(const double displacement, unsigned int &iterations);
         void
@@ -289,7 +303,21 @@ namespace masonry
         std::vector<InterfaceFace>    interfaces;
         unsigned int                  n_quad = 4;
         std::array<double, 2>         q_points, q_weights;
-        std::vector<InterfaceHistory> history_old, history_new;
+        /** Joint states at the interface points, stored as deal.II
+         * quadrature-point data of the cell on side A of each interface
+         * (n_quad points for each interface of that cell): converged
+         * (old), being computed (new) and one step further back (older,
+         * IMPL-EX). */
+        CellDataStorage<typename Triangulation<3>::cell_iterator,
+                        InterfaceHistory>
+          joints_old, joints_new, joints_older;
+        /** Per interface this rank assembles: its point states in the
+         * storages above (which keep them in place). */
+        struct JointStates
+        {
+          std::array<InterfaceHistory *, 4> old{}, updated{}, older{};
+        };
+        std::vector<JointStates> joint;
         /** Platen DOFs with the component of each: (dof, component). */
         std::vector<std::pair<types::global_dof_index, unsigned int>> top_dofs;
         std::vector<std::pair<types::global_dof_index, unsigned int>>
@@ -312,8 +340,6 @@ namespace masonry
         /** Brick states at the quadrature points (nonlinear materials). */
         CellDataStorage<typename Triangulation<3>::cell_iterator, BrickState>
           states_old, states_new, states_older;
-        /** Joint states two steps back (IMPL-EX). */
-        std::vector<InterfaceHistory> history_older;
         /** IMPL-EX: pseudo-time ratio of this step to the last. */
         double implex_ratio = 0;
         /** IMPL-EX: largest damage error of a step over the run. */
@@ -344,13 +370,25 @@ namespace masonry
         /** Cells evaluated by the material / by their elastic matrix in
          * the assemblies (work skipped where nothing can change). */
         unsigned long n_material_cells = 0, n_elastic_cells = 0;
+        /** The same for the interfaces: evaluated by the law / by their
+         * cached elastic matrix. */
+        unsigned long n_law_interfaces = 0, n_elastic_interfaces = 0;
+        /** Elastic matrices of the interfaces, by (axis, area); per
+         * interface a pointer into them (owned interfaces only). */
+        std::map<std::pair<unsigned int, long>, FullMatrix<double>>
+                                                interface_matrices;
+        std::vector<const FullMatrix<double> *> matrix_of_interface;
         /** Whether the last assembly gave the initial (elastic) tangent,
          * whether the kept solver was set up for it, and the kept solvers. */
         bool initial_tangent = false, solver_is_initial = false;
         /** A linear model's matrix is assembled once (until deletions). */
-        bool         matrix_valid            = false;
-        unsigned int n_factorisations_reused = 0;
-        unsigned int n_matrix_assemblies     = 0;
+        bool matrix_valid = false;
+        /** Elastic bricks with nonlinear joints: the bricks' part of the
+         * matrix, assembled once (until deletions). */
+        TrilinosWrappers::SparseMatrix brick_matrix;
+        bool                           brick_matrix_valid      = false;
+        unsigned int                   n_factorisations_reused = 0;
+        unsigned int                   n_matrix_assemblies     = 0;
         /** The direct solver: Amesos on the matrix, whose sparsity never
          * changes, so the symbolic analysis (ordering) is done once and
          * every new tangent only costs a numeric factorisation. */
@@ -552,9 +590,37 @@ namespace masonry
             q_points  = {{0., 1.}};
             q_weights = {{0.5, 0.5}};
           }
-        history_old.assign(interfaces.size() * n_quad, InterfaceHistory());
-        history_new   = history_old;
-        history_older = history_old;
+        // the joint states live with the cell on side A: n_quad points
+        // for each of its interfaces
+        std::vector<typename Triangulation<3>::active_cell_iterator> cells(
+          triangulation.n_active_cells());
+        for (const auto &cell : triangulation.active_cell_iterators())
+          cells[cell->active_cell_index()] = cell;
+        std::vector<unsigned int> n_of_cell(cells.size(), 0),
+          slot(interfaces.size(), 0);
+        for (unsigned int n = 0; n < interfaces.size(); ++n)
+          if (interfaces[n].owned)
+            slot[n] = n_of_cell[interfaces[n].cell_a]++;
+        for (unsigned int c = 0; c < cells.size(); ++c)
+          if (n_of_cell[c] > 0)
+            for (auto *storage : {&joints_old, &joints_new, &joints_older})
+              storage->initialize(cells[c], n_quad * n_of_cell[c]);
+        joint.assign(interfaces.size(), JointStates());
+        for (unsigned int n = 0; n < interfaces.size(); ++n)
+          if (interfaces[n].owned)
+            {
+              const auto &cell    = cells[interfaces[n].cell_a];
+              const auto  old     = joints_old.get_data(cell);
+              const auto  updated = joints_new.get_data(cell);
+              const auto  older   = joints_older.get_data(cell);
+              for (unsigned int q = 0; q < n_quad; ++q)
+                {
+                  const unsigned int k = slot[n] * n_quad + q;
+                  joint[n].old[q]      = old[k].get();
+                  joint[n].updated[q]  = updated[k].get();
+                  joint[n].older[q]    = older[k].get();
+                }
+            }
       }
 
       void
@@ -744,6 +810,32 @@ namespace masonry
                 }
               matrix_of_cell[cell->active_cell_index()] = &m;
             }
+
+        // the elastic matrix of every interface this rank assembles, one
+        // per (normal axis, area): used while the interface stays intact
+        // and below the damage onset
+        matrix_of_interface.assign(interfaces.size(), nullptr);
+        std::array<Local3, 4>  no_traction{};
+        std::array<Local33, 4> elastic{};
+        for (auto &D : elastic)
+          {
+            D[0][0] = law.normal_stiffness;
+            D[1][1] = D[2][2] = law.shear_stiffness;
+          }
+        Vector<double> f(24);
+        for (unsigned int n = 0; n < interfaces.size(); ++n)
+          if (interfaces[n].owned)
+            {
+              const auto &face = interfaces[n];
+              auto       &m    = interface_matrices[std::make_pair(
+                face.axis, std::lround(face.area * 1e12))];
+              if (m.m() == 0)
+                {
+                  m.reinit(24, 24);
+                  interface_local(face, no_traction, elastic, f, &m);
+                }
+              matrix_of_interface[n] = &m;
+            }
       }
 
       void
@@ -755,15 +847,26 @@ namespace masonry
         const bool linear_model = material.is_linear() && law.is_linear();
         bool       with_matrix = need_matrix && !(linear_model && matrix_valid);
         initial_tangent        = true;
+        const bool linear      = material.is_linear();
+        // elastic bricks and nonlinear joints: the bricks' part of the
+        // matrix never changes (until cells are deleted), so it is kept
+        // and copied instead of summed cell by cell every iteration
+        const bool keep_bricks      = linear && !linear_model && with_matrix;
+        bool       bricks_assembled = false;
         if (with_matrix)
           {
-            matrix = 0;
+            if (keep_bricks && brick_matrix_valid)
+              {
+                matrix.copy_from(brick_matrix);
+                bricks_assembled = true;
+              }
+            else
+              matrix = 0;
             ++n_matrix_assemblies;
           }
         std::vector<types::global_dof_index> dofs(24);
         Vector<double>                       ue(24), fe_local(24);
         FullMatrix<double>                   ke(24, 24);
-        const bool                           linear = material.is_linear();
         QGauss<3>                            quadrature(2);
         FEValues<3>                          fe_values(fe,
                               quadrature,
@@ -814,7 +917,7 @@ namespace masonry
                   const FullMatrix<double> &k = *matrix_of_cell[c];
                   k.vmult(fe_local, ue);
                   f_int.add(dofs, fe_local);
-                  if (with_matrix)
+                  if (with_matrix && !bricks_assembled)
                     zero_constraints.distribute_local_to_global(k,
                                                                 dofs,
                                                                 matrix);
@@ -867,78 +970,73 @@ namespace masonry
                 zero_constraints.distribute_local_to_global(ke, dofs, matrix);
             }
 
+        if (keep_bricks && !bricks_assembled)
+          {
+            matrix.compress(VectorOperation::add);
+            brick_matrix.copy_from(matrix);
+            brick_matrix_valid = true;
+          }
+
         FullMatrix<double> ki(24, 24);
         Vector<double>     fi(24);
         InterfacePoint     point;
         point.time_step = time_step;
+        std::array<Local3, 4>  jumps, tractions;
+        std::array<Local33, 4> tangents;
         for (unsigned int n = 0; n < interfaces.size(); ++n)
           {
             const auto &face = interfaces[n];
             if (!face.owned || face_deleted[n])
               continue;
             point.strength_factor = face_factor[n];
-            ki                    = 0;
-            fi                    = 0;
             for (unsigned int i = 0; i < 24; ++i)
               ue[i] = ghosted[face.dofs[i]];
-            const unsigned int a = face.axis;
-            for (unsigned int qy = 0; qy < 2; ++qy)
-              for (unsigned int qx = 0; qx < 2; ++qx)
-                {
-                  const unsigned int q  = qx + 2 * qy;
-                  const double       xi = q_points[qx], eta = q_points[qy];
-                  const double       N[4] = {(1 - xi) * (1 - eta),
-                                             xi * (1 - eta),
-                                             (1 - xi) * eta,
-                                             xi * eta};
-                  const double dA = face.area * q_weights[qx] * q_weights[qy];
-                  Local3       jump{{0, 0, 0}};
-                  for (unsigned int v = 0; v < 4; ++v)
-                    for (unsigned int k = 0; k < 3; ++k)
-                      {
-                        const unsigned int d = (a + k) % 3;
-                        jump[k] += N[v] * (ue[12 + 3 * v + d] - ue[3 * v + d]);
-                      }
-                  Local3  t;
-                  Local33 D;
-                  if (settings.implex)
-                    law.evaluate_extrapolated(jump,
-                                              history_old[n * n_quad + q],
-                                              history_older[n * n_quad + q],
-                                              implex_ratio,
-                                              point,
-                                              t,
-                                              D);
-                  else
-                    law.evaluate(jump,
-                                 history_old[n * n_quad + q],
-                                 point,
-                                 history_new[n * n_quad + q],
-                                 t,
-                                 D);
-                  for (unsigned int v = 0; v < 8; ++v)
-                    {
-                      const double sv = (v < 4 ? -1. : 1.) * N[v % 4];
-                      for (unsigned int k = 0; k < 3; ++k)
-                        {
-                          const unsigned int row = 3 * v + (a + k) % 3;
-                          fi[row] += sv * t[k] * dA;
-                          if (with_matrix)
-                            for (unsigned int w = 0; w < 8; ++w)
-                              {
-                                const double sw = (w < 4 ? -1. : 1.) * N[w % 4];
-                                for (unsigned int l = 0; l < 3; ++l)
-                                  ki(row, 3 * w + (a + l) % 3) +=
-                                    sv * sw * D[k][l] * dA;
-                              }
-                        }
-                    }
-                }
+            interface_jumps(face, ue, jumps);
+            const JointStates &h       = joint[n];
+            bool               elastic = true;
+            for (unsigned int q = 0; q < n_quad && elastic; ++q)
+              elastic = law.is_elastic(jumps[q], *h.old[q], point) &&
+                        (!settings.implex ||
+                         law.is_elastic(jumps[q], *h.older[q], point));
+            if (elastic)
+              {
+                // intact and below the onset: the cached elastic matrix
+                // gives the exact response, the law is not evaluated
+                const FullMatrix<double> &k = *matrix_of_interface[n];
+                k.vmult(fi, ue);
+                f_int.add(face.dofs, fi);
+                if (with_matrix)
+                  zero_constraints.distribute_local_to_global(k,
+                                                              face.dofs,
+                                                              matrix);
+                if (!settings.implex)
+                  for (unsigned int q = 0; q < n_quad; ++q)
+                    *h.updated[q] = *h.old[q];
+                ++n_elastic_interfaces;
+                continue;
+              }
+            ++n_law_interfaces;
+            for (unsigned int q = 0; q < n_quad; ++q)
+              if (settings.implex)
+                law.evaluate_extrapolated(jumps[q],
+                                          *h.old[q],
+                                          *h.older[q],
+                                          implex_ratio,
+                                          point,
+                                          tractions[q],
+                                          tangents[q]);
+              else
+                law.evaluate(jumps[q],
+                             *h.old[q],
+                             point,
+                             *h.updated[q],
+                             tractions[q],
+                             tangents[q]);
+            interface_local(
+              face, tractions, tangents, fi, with_matrix ? &ki : nullptr);
             if (initial_tangent)
               for (unsigned int q = 0; q < n_quad; ++q)
-                if ((settings.implex ? history_old :
-                                       history_new)[n * n_quad + q]
-                      .damage > 0)
+                if ((settings.implex ? h.old : h.updated)[q]->damage > 0)
                   initial_tangent = false;
             f_int.add(face.dofs, fi);
             if (with_matrix)
@@ -966,6 +1064,74 @@ namespace masonry
           }
         seconds_assembly +=
           std::chrono::duration<double>(Clock::now() - start).count();
+      }
+
+      void
+      Model::interface_jumps(const InterfaceFace   &face,
+                             const Vector<double>  &ue,
+                             std::array<Local3, 4> &jumps) const
+      {
+        const unsigned int a = face.axis;
+        for (unsigned int qy = 0; qy < 2; ++qy)
+          for (unsigned int qx = 0; qx < 2; ++qx)
+            {
+              const double xi = q_points[qx], eta = q_points[qy];
+              const double N[4] = {(1 - xi) * (1 - eta),
+                                   xi * (1 - eta),
+                                   (1 - xi) * eta,
+                                   xi * eta};
+              Local3      &jump = jumps[qx + 2 * qy];
+              jump              = {{0, 0, 0}};
+              for (unsigned int v = 0; v < 4; ++v)
+                for (unsigned int k = 0; k < 3; ++k)
+                  {
+                    const unsigned int d = (a + k) % 3;
+                    jump[k] += N[v] * (ue[12 + 3 * v + d] - ue[3 * v + d]);
+                  }
+            }
+      }
+
+      void
+      Model::interface_local(const InterfaceFace          &face,
+                             const std::array<Local3, 4>  &tractions,
+                             const std::array<Local33, 4> &tangents,
+                             Vector<double>               &fi,
+                             FullMatrix<double>           *ki) const
+      {
+        fi = 0;
+        if (ki)
+          *ki = 0;
+        const unsigned int a = face.axis;
+        for (unsigned int qy = 0; qy < 2; ++qy)
+          for (unsigned int qx = 0; qx < 2; ++qx)
+            {
+              const unsigned int q  = qx + 2 * qy;
+              const double       xi = q_points[qx], eta = q_points[qy];
+              const double       N[4] = {(1 - xi) * (1 - eta),
+                                         xi * (1 - eta),
+                                         (1 - xi) * eta,
+                                         xi * eta};
+              const double       dA = face.area * q_weights[qx] * q_weights[qy];
+              const Local3      &t  = tractions[q];
+              const Local33     &D  = tangents[q];
+              for (unsigned int v = 0; v < 8; ++v)
+                {
+                  const double sv = (v < 4 ? -1. : 1.) * N[v % 4];
+                  for (unsigned int k = 0; k < 3; ++k)
+                    {
+                      const unsigned int row = 3 * v + (a + k) % 3;
+                      fi[row] += sv * t[k] * dA;
+                      if (ki)
+                        for (unsigned int w = 0; w < 8; ++w)
+                          {
+                            const double sw = (w < 4 ? -1. : 1.) * N[w % 4];
+                            for (unsigned int l = 0; l < 3; ++l)
+                              (*ki)(row, 3 * w + (a + l) % 3) +=
+                                sv * sw * D[k][l] * dA;
+                          }
+                    }
+                }
+            }
       }
 
       void
@@ -1098,8 +1264,10 @@ namespace masonry
       Model::max_damage() const
       {
         double d = 0;
-        for (const auto &h : history_old)
-          d = std::max(d, h.damage);
+        for (unsigned int n = 0; n < interfaces.size(); ++n)
+          if (interfaces[n].owned)
+            for (unsigned int q = 0; q < n_quad; ++q)
+              d = std::max(d, joint[n].old[q]->damage);
         return Utilities::MPI::max(d, comm);
       }
 
@@ -1284,7 +1452,7 @@ namespace masonry
               const auto        &face = interfaces[i];
               const unsigned int a    = face.axis;
               for (unsigned int q = 0; q < n_quad; ++q)
-                damage[i] += history_old[i * n_quad + q].damage / n_quad;
+                damage[i] += joint[i].old[q]->damage / n_quad;
               // opening at the centre of the face
               Tensor<1, 3> jump;
               for (unsigned int v = 0; v < 4; ++v)
@@ -1658,9 +1826,14 @@ namespace masonry
       void
       Model::accept_step()
       {
-        if (settings.implex)
-          history_older = history_old;
-        history_old = history_new;
+        for (unsigned int n = 0; n < interfaces.size(); ++n)
+          if (interfaces[n].owned)
+            for (unsigned int q = 0; q < n_quad; ++q)
+              {
+                if (settings.implex)
+                  *joint[n].older[q] = *joint[n].old[q];
+                *joint[n].old[q] = *joint[n].updated[q];
+              }
         if (!material.is_linear())
           for (const auto &cell : triangulation.active_cell_iterators())
             if (cell->is_locally_owned() && !deleted[cell->active_cell_index()])
@@ -1724,41 +1897,28 @@ namespace masonry
           }
         InterfacePoint point;
         point.time_step = time_step;
-        Local3  t;
-        Local33 D;
+        Local3                t;
+        Local33               D;
+        Vector<double>        ue(24);
+        std::array<Local3, 4> jumps;
         for (unsigned int n = 0; n < interfaces.size(); ++n)
           {
             const auto &face = interfaces[n];
             if (!face.owned || face_deleted[n])
               continue;
             point.strength_factor = face_factor[n];
-            const unsigned int a  = face.axis;
-            for (unsigned int qy = 0; qy < 2; ++qy)
-              for (unsigned int qx = 0; qx < 2; ++qx)
-                {
-                  const unsigned int q  = qx + 2 * qy;
-                  const double       xi = q_points[qx], eta = q_points[qy];
-                  const double       N[4] = {(1 - xi) * (1 - eta),
-                                             xi * (1 - eta),
-                                             (1 - xi) * eta,
-                                             xi * eta};
-                  Local3             jump{{0, 0, 0}};
-                  for (unsigned int v = 0; v < 4; ++v)
-                    for (unsigned int k = 0; k < 3; ++k)
-                      {
-                        const unsigned int d = (a + k) % 3;
-                        jump[k] += N[v] * (ghosted[face.dofs[12 + 3 * v + d]] -
-                                           ghosted[face.dofs[3 * v + d]]);
-                      }
-                  const unsigned int i = n * n_quad + q;
-                  law.evaluate(
-                    jump, history_old[i], point, history_new[i], t, D);
-                  error =
-                    std::max(error,
-                             std::abs(history_new[i].damage -
-                                      extrapolated(history_old[i].damage,
-                                                   history_older[i].damage)));
-                }
+            for (unsigned int i = 0; i < 24; ++i)
+              ue[i] = ghosted[face.dofs[i]];
+            interface_jumps(face, ue, jumps);
+            const JointStates &h = joint[n];
+            for (unsigned int q = 0; q < n_quad; ++q)
+              {
+                law.evaluate(jumps[q], *h.old[q], point, *h.updated[q], t, D);
+                error = std::max(error,
+                                 std::abs(h.updated[q]->damage -
+                                          extrapolated(h.old[q]->damage,
+                                                       h.older[q]->damage)));
+              }
           }
         return Utilities::MPI::max(error, comm);
       }
@@ -1844,7 +2004,7 @@ namespace masonry
           if (!used[i])
             orphans.push_back(i);
         make_constraints();
-        matrix_valid = solver_is_initial = false;
+        matrix_valid = solver_is_initial = brick_matrix_valid = false;
         return all.size();
       }
 
@@ -1950,8 +2110,17 @@ namespace masonry
           const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
           const types::global_dof_index n_dofs = dof_handler.n_dofs();
           ar &n_ranks                  &n_dofs;
+          // the joint states of the interfaces this rank assembles
+          std::vector<InterfaceHistory> joint_old, joint_older;
+          for (unsigned int n = 0; n < interfaces.size(); ++n)
+            if (interfaces[n].owned)
+              for (unsigned int q = 0; q < n_quad; ++q)
+                {
+                  joint_old.push_back(*joint[n].old[q]);
+                  joint_older.push_back(*joint[n].older[q]);
+                }
           ar &progress &curve &total_newton &total_cutbacks &n_solves &n_deleted
-            &deleted &face_deleted &orphans &history_old &history_older;
+            &deleted &face_deleted &orphans &joint_old &joint_older;
           ar &implex_max_error &implex_over_tolerance &n_direct_fallbacks
             &krylov_abandoned &implex_rejected;
           std::vector<std::pair<types::global_dof_index, double>> values;
@@ -2005,12 +2174,21 @@ namespace masonry
                                        std::to_string(n_dofs) +
                                        " DOFs; resume with the same "
                                        "parameters and number of ranks"));
-            ar &progress &curve &total_newton &total_cutbacks &n_solves
-              &n_deleted &deleted &face_deleted &orphans &history_old
-                &history_older;
+            std::vector<InterfaceHistory> joint_old, joint_older;
+            ar &progress &curve &total_newton &total_cutbacks &n_solves &
+              n_deleted &deleted &face_deleted &orphans &joint_old &joint_older;
             ar &implex_max_error &implex_over_tolerance &n_direct_fallbacks
               &krylov_abandoned &implex_rejected;
-            history_new = history_old;
+            std::size_t          j = 0;
+            for (unsigned int n = 0; n < interfaces.size(); ++n)
+              if (interfaces[n].owned)
+                for (unsigned int q = 0; q < n_quad; ++q, ++j)
+                  {
+                    AssertThrow(j < joint_old.size() && j < joint_older.size(),
+                                ExcInternalError());
+                    *joint[n].old[q] = *joint[n].updated[q] = joint_old[j];
+                    *joint[n].older[q]                      = joint_older[j];
+                  }
             std::vector<std::pair<types::global_dof_index, double>> values;
             ar                                                     &values;
             for (const auto &v : values)
@@ -2364,12 +2542,20 @@ namespace masonry
             summary["implex_steps_over_tolerance"] = implex_over_tolerance;
             summary["implex_steps_redone"]         = implex_rejected;
           }
+        // share of the evaluations skipped by the elastic check, over all
+        // ranks (work skipped where nothing can change)
+        const auto elastic_fraction = [&](const unsigned long elastic,
+                                          const unsigned long evaluated) {
+          const double e   = Utilities::MPI::sum(double(elastic), comm),
+                       all = e + Utilities::MPI::sum(double(evaluated), comm);
+          return all > 0 ? e / all : 0.;
+        };
         if (!material.is_linear())
-          {
-            const unsigned long all = n_material_cells + n_elastic_cells;
-            summary["cell_evaluations_elastic_fraction"] =
-              all > 0 ? double(n_elastic_cells) / all : 0.;
-          }
+          summary["cell_evaluations_elastic_fraction"] =
+            elastic_fraction(n_elastic_cells, n_material_cells);
+        if (!law.is_linear())
+          summary["interface_evaluations_elastic_fraction"] =
+            elastic_fraction(n_elastic_interfaces, n_law_interfaces);
         summary["seconds"]          = seconds;
         summary["seconds_assembly"] = seconds_assembly;
         summary["seconds_solve"]    = seconds_solve;

@@ -14,7 +14,11 @@ namespace masonry
 {
   namespace brickwork
   {
-    /** State of an interface integration point (irreversible). */
+    /**
+     * State of an interface integration point (irreversible). Stored as
+     * deal.II quadrature-point data (CellDataStorage) of the cell on the
+     * interface's side A and written to checkpoints by serialize().
+     */
     struct InterfaceHistory
     {
       /**
@@ -124,6 +128,24 @@ namespace masonry
                             const InterfacePoint   &point,
                             Local3                 &t,
                             Local33                &tangent) const;
+
+      /**
+       * Whether evaluate() at @p jump from @p old would give exactly the
+       * initial elastic response (traction = diag(k_n, k_s, k_s) jump, that
+       * tangent, state unchanged), and evaluate_extrapolated() from @p old
+       * and an equally intact older state too. The assembly then uses the
+       * interface's cached elastic matrix. The default: is_linear().
+       */
+      virtual bool
+      is_elastic(const Local3           &jump,
+                 const InterfaceHistory &old,
+                 const InterfacePoint   &point) const
+      {
+        (void)jump;
+        (void)old;
+        (void)point;
+        return is_linear();
+      }
 
       /** Whether the law is linear (tangent independent of the state). */
       virtual bool
