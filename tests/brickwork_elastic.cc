@@ -107,6 +107,33 @@ main(int argc, char **argv)
                        "stress = series formula to 1e-8");
         }
 
+  // the same prism with bilinear (damaging) joints: in uniform compression
+  // no joint opens or slips, so the response is the elastic one and every
+  // interface evaluation takes the cached elastic matrix (the law is never
+  // called)
+  {
+    std::ostringstream p;
+    p << "subsection Bond\nset Pattern = stack\nend\n"
+      << "subsection Brick material\nsubsection Elastic\n"
+      << "set Young's modulus = " << E << "\n"
+      << "set Poisson's ratio = " << nu << "\nend\nend\n"
+      << "subsection Interface law\nset Law = bilinear\n"
+      << "set Normal stiffness = " << k_n << "\n"
+      << "set Shear stiffness = " << k_s << "\nend\n";
+    const masonry::Json s =
+      run("stack_bilinear",
+          prm("set Courses = 3\nset Length in bricks = 2\n"
+              "set Platen lateral restraint = free\n"
+              "set Target strain = 0.002\nset Number of steps = 2\n"
+              "set Elements along the length = 2\n",
+              p.str()));
+    const double H = 3 * h_b, expected = H / (3 * h_b / E + 2 / k_n);
+    check(relative(s.at("initial_modulus").as_number(), expected) < 1e-8 &&
+            s.at("interface_evaluations_elastic_fraction").as_number() == 1,
+          "stack prism, bilinear joints in compression: series modulus to "
+          "1e-8, every interface evaluation skipped (elastic fraction 1)");
+  }
+
   // perfectly bonded: no interfaces, the modulus of the bricks
   {
     std::ostringstream p;
