@@ -873,9 +873,12 @@ namespace masonry
                               update_gradients | update_JxW_values);
         const FEValuesExtractors::Vector     displacement(0);
         std::array<SymmetricTensor<2, 3>, 8> strain;
-        std::vector<SymmetricTensor<2, 3>>   B(24);
-        SymmetricTensor<2, 3>                stress;
-        SymmetricTensor<4, 3>                C;
+        std::array<Tensor<1, 3>, 24>         grad;
+        std::array<unsigned int, 24>         component;
+        for (unsigned int i = 0; i < 24; ++i)
+          component[i] = fe.system_to_component_index(i).first;
+        SymmetricTensor<2, 3> stress;
+        SymmetricTensor<4, 3> C;
         for (const auto &cell : dof_handler.active_cell_iterators())
           if (cell->is_locally_owned() && !deleted[cell->active_cell_index()])
             {
@@ -947,17 +950,44 @@ namespace masonry
                   else
                     material.evaluate(
                       strain[q], *old[q], point, *updated[q], stress, C);
+                  // every shape function has one nonzero component c_i
+                  // with gradient g_i, so stress : B_i = sigma[c_i] . g_i
+                  // and B_i : C : B_j = g_i . C[c_i][.][c_j][.] g_j (C has
+                  // the minor symmetries)
                   const double JxW = fe_values.JxW(q);
                   for (unsigned int i = 0; i < 24; ++i)
-                    B[i] = fe_values[displacement].symmetric_gradient(i, q);
-                  for (unsigned int i = 0; i < 24; ++i)
                     {
-                      fe_local[i] += (stress * B[i]) * JxW;
-                      if (with_matrix)
+                      grad[i] =
+                        fe_values.shape_grad_component(i, q, component[i]);
+                      for (unsigned int b = 0; b < 3; ++b)
+                        fe_local[i] +=
+                          stress[component[i]][b] * grad[i][b] * JxW;
+                    }
+                  if (with_matrix)
+                    {
+                      double Cf[3][3][3][3];
+                      for (unsigned int a = 0; a < 3; ++a)
+                        for (unsigned int b = 0; b < 3; ++b)
+                          for (unsigned int c = 0; c < 3; ++c)
+                            for (unsigned int e = 0; e < 3; ++e)
+                              Cf[a][b][c][e] = C[a][b][c][e] * JxW;
+                      for (unsigned int j = 0; j < 24; ++j)
                         {
-                          const SymmetricTensor<2, 3> BC = B[i] * C;
-                          for (unsigned int j = 0; j < 24; ++j)
-                            ke(i, j) += (BC * B[j]) * JxW;
+                          // h[a][b] = sum_e C[a][b][c_j][e] g_j[e] JxW
+                          double             h[3][3];
+                          const unsigned int cj = component[j];
+                          for (unsigned int a = 0; a < 3; ++a)
+                            for (unsigned int b = 0; b < 3; ++b)
+                              h[a][b] = Cf[a][b][cj][0] * grad[j][0] +
+                                        Cf[a][b][cj][1] * grad[j][1] +
+                                        Cf[a][b][cj][2] * grad[j][2];
+                          for (unsigned int i = 0; i < 24; ++i)
+                            {
+                              const double *hi = h[component[i]];
+                              ke(i, j) += hi[0] * grad[i][0] +
+                                          hi[1] * grad[i][1] +
+                                          hi[2] * grad[i][2];
+                            }
                         }
                     }
                 }
