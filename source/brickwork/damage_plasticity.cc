@@ -291,6 +291,31 @@ namespace masonry
                             SymmetricTensor<2, 3> &stress,
                             SymmetricTensor<4, 3> &tangent) const override
       {
+        extrapolated(strain, old, older, ratio_t, stress, &tangent);
+      }
+
+      void
+      extrapolated_stress(const SymmetricTensor<2, 3> &strain,
+                          const BrickState            &old,
+                          const BrickState            &older,
+                          const double                 ratio_t,
+                          const BrickPoint &,
+                          SymmetricTensor<2, 3> &stress) const override
+      {
+        extrapolated(strain, old, older, ratio_t, stress, nullptr);
+      }
+
+    private:
+      /** IMPL-EX stress and (if @p tangent) tangent, see
+       * evaluate_extrapolated(). */
+      void
+      extrapolated(const SymmetricTensor<2, 3> &strain,
+                   const BrickState            &old,
+                   const BrickState            &older,
+                   const double                 ratio_t,
+                   SymmetricTensor<2, 3>       &stress,
+                   SymmetricTensor<4, 3>       *tangent) const
+      {
         // damages and plastic strain extrapolated and frozen
         auto extrapolate = [&](const double d, const double d_older) {
           return std::clamp(d + ratio_t * (d - d_older), d, d_max);
@@ -305,13 +330,14 @@ namespace masonry
         // ((d_c - d_t) dP/ds + (1 - d_c) I) : C0
         const SymmetricTensor<2, 3> s = effective(strain - plastic);
         SymmetricTensor<4, 3>       dP;
-        const SymmetricTensor<2, 3> P = positive_part(s, &dP);
-        stress                        = (1 - d_t) * P + (1 - d_c) * (s - P);
-        tangent =
-          ((d_c - d_t) * dP + (1 - d_c) * dealii::identity_tensor<3>()) * C0;
+        const SymmetricTensor<2, 3> P =
+          positive_part(s, tangent ? &dP : nullptr);
+        stress = (1 - d_t) * P + (1 - d_c) * (s - P);
+        if (tangent)
+          *tangent =
+            ((d_c - d_t) * dP + (1 - d_c) * dealii::identity_tensor<3>()) * C0;
       }
 
-    private:
       /** C0 : e. */
       SymmetricTensor<2, 3>
       effective(const SymmetricTensor<2, 3> &e) const

@@ -408,6 +408,19 @@ namespace masonry
     }
 
     void
+    BrickMaterial::extrapolated_stress(
+      const dealii::SymmetricTensor<2, 3> &strain,
+      const BrickState                    &old,
+      const BrickState                    &older,
+      const double                         ratio,
+      const BrickPoint                    &point,
+      dealii::SymmetricTensor<2, 3>       &stress) const
+    {
+      dealii::SymmetricTensor<4, 3> tangent;
+      evaluate_extrapolated(strain, old, older, ratio, point, stress, tangent);
+    }
+
+    void
     BrickMaterial::update_state(const dealii::SymmetricTensor<2, 3> &strain,
                                 const BrickState                    &old,
                                 const BrickPoint                    &point,

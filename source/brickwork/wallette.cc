@@ -939,7 +939,8 @@ namespace masonry
                 ke = 0;
               for (unsigned int q = 0; q < 8; ++q)
                 {
-                  if (settings.implex)
+                  // a residual assembly (line search) needs no tangent
+                  if (settings.implex && with_matrix)
                     material.evaluate_extrapolated(strain[q],
                                                    *old[q],
                                                    *older[q],
@@ -947,9 +948,19 @@ namespace masonry
                                                    point,
                                                    stress,
                                                    C);
-                  else
+                  else if (settings.implex)
+                    material.extrapolated_stress(strain[q],
+                                                 *old[q],
+                                                 *older[q],
+                                                 implex_ratio,
+                                                 point,
+                                                 stress);
+                  else if (with_matrix)
                     material.evaluate(
                       strain[q], *old[q], point, *updated[q], stress, C);
+                  else
+                    material.update_state(
+                      strain[q], *old[q], point, *updated[q], stress);
                   // every shape function has one nonzero component c_i
                   // with gradient g_i, so stress : B_i = sigma[c_i] . g_i
                   // and B_i : C : B_j = g_i . C[c_i][.][c_j][.] g_j (C has

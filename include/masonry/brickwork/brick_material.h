@@ -159,6 +159,19 @@ namespace masonry
                             dealii::SymmetricTensor<4, 3>       &tangent) const;
 
       /**
+       * The stress of evaluate_extrapolated() without the tangent (residual
+       * assemblies: line search). The default calls evaluate_extrapolated()
+       * and drops the tangent.
+       */
+      virtual void
+      extrapolated_stress(const dealii::SymmetricTensor<2, 3> &strain,
+                          const BrickState                    &old,
+                          const BrickState                    &older,
+                          const double                         ratio,
+                          const BrickPoint                    &point,
+                          dealii::SymmetricTensor<2, 3>       &stress) const;
+
+      /**
        * Whether evaluate() at @p strain from @p old would give exactly the
        * initial elastic response (stress = C0 : strain, tangent C0, state
        * unchanged): intact, no plastic strain, inside the initial elastic
