@@ -3,7 +3,8 @@
  * rank, with migration of the best mesh after every generation): two runs
  * with the same seed give identical results, both ranks agree, the result
  * is never worse than the uniform mesh, and the 6-block arch under a
- * settlement is within 0.5 % of 512 uniform blocks (as on one rank).
+ * settlement is within 0.5 % of 512 uniform blocks (as on one rank). The
+ * same with two threads per rank (four islands evolved concurrently).
  */
 #include <deal.II/base/mpi.h>
 
@@ -28,6 +29,12 @@ main(int argc, char **argv)
     run("first", arch_prm(5, 1, 3, "0; 0; -0.01") + adaptation);
   const masonry::Json b =
     run("second", arch_prm(5, 1, 3, "0; 0; -0.01") + adaptation);
+  std::string threaded = adaptation;
+  threaded.insert(threaded.find("end\n"), "  set Threads = 2\n");
+  const masonry::Json c =
+    run("threads_first", arch_prm(5, 1, 3, "0; 0; -0.01") + threaded);
+  const masonry::Json d =
+    run("threads_second", arch_prm(5, 1, 3, "0; 0; -0.01") + threaded);
 
   // the best genes of every rank, gathered on rank 0
   std::vector<double> genes;
@@ -51,4 +58,20 @@ main(int argc, char **argv)
   check(relative(a.at("external_work").as_number(), fine) < 5e-3,
         "6 blocks adapted on two ranks: work within 0.5 % of 512 uniform "
         "blocks");
+
+  const auto &cd = c.at("adaptation");
+  check(cd.at("islands").as_number() == 4 && cd.at("threads").as_number() == 2,
+        "two threads per rank: four islands");
+  same = c.at("external_work").as_number() == d.at("external_work").as_number();
+  for (unsigned int i = 0; i < cd.at("best_genes").size(); ++i)
+    same = same && cd.at("best_genes").at(i).as_number() ==
+                     d.at("adaptation").at("best_genes").at(i).as_number();
+  check(same,
+        "the same seed on two ranks with two threads reproduces the result "
+        "exactly");
+  check(cd.at("best_fitness").as_number() >=
+            cd.at("uniform_fitness").as_number() &&
+          relative(c.at("external_work").as_number(), fine) < 5e-3,
+        "four islands: adapted work ≥ uniform mesh's and within 0.5 % of 512 "
+        "uniform blocks");
 }

@@ -63,6 +63,20 @@ namespace masonry
                         "Stop after this many generations without "
                         "improvement of the best fitness (0: never stop "
                         "early).");
+      prm.declare_entry(
+        "Threads",
+        "1",
+        dealii::Patterns::Integer(1, 256),
+        "Islands evolved in parallel threads on each MPI rank "
+        "(dimensionless): every rank holds this many populations of "
+        "`Population size' meshes, each evolved one generation at a time "
+        "in its own thread with its own copy of the analysis (geometry, "
+        "blocks, LP solver), and after every generation the best mesh of "
+        "all islands of all ranks replaces the worst member of every island "
+        "that is worse. Islands = ranks x threads; a fixed seed gives the "
+        "same result for the same numbers of ranks and threads. Use the "
+        "cores of a node: e.g. 2 threads on one rank or 1 thread on each "
+        "of 2 ranks on 2 cores.");
       prm.declare_entry("Minimum block size",
                         "0.02",
                         dealii::Patterns::Double(0, 0.5),
@@ -79,6 +93,7 @@ namespace masonry
       generations        = prm.get_integer("Generations");
       seed               = prm.get_integer("Seed");
       stall_generations  = prm.get_integer("Stall generations");
+      threads            = prm.get_integer("Threads");
       minimum_block_size = prm.get_double("Minimum block size");
       vertex_genes       = prm.get("Mesh genes") == "vertices";
     }
@@ -101,9 +116,9 @@ namespace masonry
       public:
         Result
         optimise(
-          const MPI_Comm                                            comm,
-          const std::function<double(const std::vector<double> &)> &fitness,
-          const std::vector<double>                                &x0,
+          const MPI_Comm                                 comm,
+          const std::vector<Fitness>                    &fitness,
+          const std::vector<double>                     &x0,
           const std::function<void(const Generation &)> &progress) override
         {
           PagmoSettings settings;
@@ -142,7 +157,7 @@ namespace masonry
 
         Result
         optimise(const MPI_Comm,
-                 const std::function<double(const std::vector<double> &)> &,
+                 const std::vector<Fitness> &,
                  const std::vector<double> &x0,
                  const std::function<void(const Generation &)> &) override
         {

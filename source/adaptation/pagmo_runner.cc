@@ -11,8 +11,10 @@
 
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <memory>
 #include <stdexcept>
+#include <thread>
 
 namespace masonry
 {
@@ -23,9 +25,7 @@ namespace masonry
       /** The fitness as a pagmo problem (minimisation of −fitness). */
       struct Problem
       {
-        std::shared_ptr<
-          const std::function<double(const std::vector<double> &)>>
-                                       function;
+        std::shared_ptr<const Fitness> function;
         std::shared_ptr<unsigned long> counter;
         unsigned int                   dimension = 1;
 
@@ -73,51 +73,102 @@ namespace masonry
     } // namespace
 
     Result
-    run_pagmo(const MPI_Comm       comm,
-              const PagmoSettings &settings,
-              const std::function<double(const std::vector<double> &)> &fitness,
-              const std::vector<double>                                &x0,
+    run_pagmo(const MPI_Comm                                 comm,
+              const PagmoSettings                           &settings,
+              const std::vector<Fitness>                    &fitness,
+              const std::vector<double>                     &x0,
               const std::function<void(const Generation &)> &progress)
     {
       const auto start = std::chrono::steady_clock::now();
       int        rank = 0, size = 1;
       MPI_Comm_rank(comm, &rank);
       MPI_Comm_size(comm, &size);
-      const unsigned int seed = settings.seed + 1000u * rank;
-      Problem            udp;
-      udp.function = std::make_shared<
-        const std::function<double(const std::vector<double> &)>>(fitness);
-      udp.counter               = std::make_shared<unsigned long>(0);
-      udp.dimension             = x0.size();
-      const auto        counter = udp.counter;
-      pagmo::problem    problem{udp};
-      pagmo::population population{problem, settings.population_size - 1, seed};
-      population.push_back(x0);
-      PagmoSettings island         = settings;
-      island.seed                  = seed;
-      pagmo::algorithm   algorithm = make_algorithm(island);
+      const unsigned int n_threads = fitness.size();
+      const unsigned int n_islands = n_threads * size;
       const unsigned int n         = x0.size();
 
-      // the best mesh of all islands (ties: the lowest rank), on every rank
-      std::vector<double> best_x  = population.champion_x();
-      double              best_f  = population.champion_f()[0];
+      // run body(t) for every island t of this rank, each in its own
+      // thread; an exception in any is rethrown here
+      const auto parallel = [&](const std::function<void(unsigned int)> &body) {
+        if (n_threads == 1)
+          return body(0);
+        std::vector<std::exception_ptr> errors(n_threads);
+        std::vector<std::thread>        threads;
+        for (unsigned int t = 0; t < n_threads; ++t)
+          threads.emplace_back([&, t]() {
+            try
+              {
+                body(t);
+              }
+            catch (...)
+              {
+                errors[t] = std::current_exception();
+              }
+          });
+        for (auto &thread : threads)
+          thread.join();
+        for (const auto &e : errors)
+          if (e)
+            std::rethrow_exception(e);
+      };
+
+      // island i = rank * n_threads + t has the seed settings.seed + 1000 i
+      std::vector<std::shared_ptr<unsigned long>> counters(n_threads);
+      std::vector<pagmo::population>              populations(n_threads);
+      std::vector<pagmo::algorithm>               algorithms;
+      for (unsigned int t = 0; t < n_threads; ++t)
+        {
+          PagmoSettings island = settings;
+          island.seed          = settings.seed + 1000u * (rank * n_threads + t);
+          algorithms.push_back(make_algorithm(island));
+          counters[t] = std::make_shared<unsigned long>(0);
+        }
+      parallel([&](const unsigned int t) {
+        Problem udp;
+        udp.function  = std::make_shared<const Fitness>(fitness[t]);
+        udp.counter   = counters[t];
+        udp.dimension = n;
+        populations[t] =
+          pagmo::population{pagmo::problem{udp},
+                            settings.population_size - 1,
+                            settings.seed + 1000u * (rank * n_threads + t)};
+        populations[t].push_back(x0);
+      });
+
+      // the best mesh of all islands (ties: the lowest island), on every
+      // rank; it replaces the worst member of every island that is worse
+      std::vector<double> best_x;
+      double              best_f  = 0;
       auto                migrate = [&]() {
-        const double        mine = population.champion_f()[0];
-        std::vector<double> all_f(size);
-        MPI_Allgather(&mine, 1, MPI_DOUBLE, all_f.data(), 1, MPI_DOUBLE, comm);
-        int winner = 0;
-        for (int r = 1; r < size; ++r)
-          if (all_f[r] < all_f[winner])
-            winner = r;
-        std::vector<double> x = population.champion_x();
-        MPI_Bcast(x.data(), n, MPI_DOUBLE, winner, comm);
+        std::vector<double> mine(n_threads), all_f(n_islands);
+        for (unsigned int t = 0; t < n_threads; ++t)
+          mine[t] = populations[t].champion_f()[0];
+        MPI_Allgather(mine.data(),
+                      n_threads,
+                      MPI_DOUBLE,
+                      all_f.data(),
+                      n_threads,
+                      MPI_DOUBLE,
+                      comm);
+        unsigned int winner = 0;
+        for (unsigned int i = 1; i < n_islands; ++i)
+          if (all_f[i] < all_f[winner])
+            winner = i;
+        std::vector<double> x(n);
+        if (int(winner / n_threads) == rank)
+          x = populations[winner % n_threads].champion_x();
+        MPI_Bcast(x.data(), n, MPI_DOUBLE, winner / n_threads, comm);
         if (all_f[winner] < best_f || best_x.empty())
           {
             best_f = all_f[winner];
             best_x = x;
           }
-        if (size > 1 && all_f[winner] < mine)
-          population.set_xf(population.worst_idx(), x, {all_f[winner]});
+        if (n_islands > 1)
+          for (unsigned int t = 0; t < n_threads; ++t)
+            if (all_f[winner] < mine[t])
+              populations[t].set_xf(populations[t].worst_idx(),
+                                    x,
+                                    {all_f[winner]});
       };
 
       Result result;
@@ -125,13 +176,17 @@ namespace masonry
         Generation line;
         line.generation = g;
         migrate();
-        double local[3] = {double(*counter), 0., 0.}, global[3];
-        for (const auto &f : population.get_f())
-          if (f[0] < 1e299)
-            {
-              local[1] -= f[0];
-              local[2] += 1;
-            }
+        double local[3] = {0., 0., 0.}, global[3];
+        for (unsigned int t = 0; t < n_threads; ++t)
+          {
+            local[0] += double(*counters[t]);
+            for (const auto &f : populations[t].get_f())
+              if (f[0] < 1e299)
+                {
+                  local[1] -= f[0];
+                  local[2] += 1;
+                }
+          }
         MPI_Allreduce(local, global, 3, MPI_DOUBLE, MPI_SUM, comm);
         line.evaluations = static_cast<unsigned long>(global[0]);
         line.best        = -best_f;
@@ -146,10 +201,13 @@ namespace masonry
       unsigned int stalled = 0;
       for (unsigned int g = 1; g <= settings.generations; ++g)
         {
-          const double before = -population.champion_f()[0];
-          population          = algorithm.evolve(population);
+          // after a migration every island's champion is the global best
+          const double before = best_f;
+          parallel([&](const unsigned int t) {
+            populations[t] = algorithms[t].evolve(populations[t]);
+          });
           record(g);
-          stalled = (-population.champion_f()[0] > before) ? 0 : stalled + 1;
+          stalled = best_f < before ? 0 : stalled + 1;
           if (settings.stall_generations > 0 &&
               stalled >= settings.stall_generations)
             break;

@@ -202,6 +202,19 @@ namespace masonry
         }
       plugins::ParsePathScope scope(section);
       model = std::make_unique<rigid_blocks::BlockModel>(*geometry, options);
+      // the other adaptation threads evaluate meshes with copies of their
+      // own (made after this set-up succeeded, so errors are reported once)
+      if (optimiser->active() && !is_worker)
+        for (unsigned int t = 1; t < optimiser->threads; ++t)
+          {
+            auto  created = plugins::Registry<analysis::Interface>::create(prm);
+            auto *worker  = dynamic_cast<RigidBlockAnalysis *>(created.get());
+            AssertThrow(worker != nullptr, dealii::ExcInternalError());
+            created.release();
+            workers.emplace_back(worker);
+            worker->is_worker = true;
+            worker->setup(prm);
+          }
     }
 
     void
@@ -291,29 +304,38 @@ namespace masonry
             << " genes, population " << optimiser->population_size
             << ", at most " << optimiser->generations << " generations; "
             << "maximising " << fitness_name() << "\n";
-      quiet                  = true;
-      unsigned long n_failed = 0;
-      const auto    start    = std::chrono::steady_clock::now();
-      auto          fitness  = [&](const std::vector<double> &genes) {
-        try
-          {
-            mesh_vertices  = vertices_from_genes(genes);
-            const double f = evaluate(context);
-            // patches glued along moved lines must stay glued
-            if (model->interfaces().size() != n_interfaces_uniform)
+      // one analysis per thread: this one and its workers
+      std::vector<RigidBlockAnalysis *> analyses = {this};
+      for (const auto &w : workers)
+        analyses.push_back(w.get());
+      std::vector<unsigned long>       failed(analyses.size(), 0);
+      std::vector<adaptation::Fitness> fitness;
+      const auto                       start = std::chrono::steady_clock::now();
+      for (unsigned int t = 0; t < analyses.size(); ++t)
+        {
+          analyses[t]->quiet = true;
+          fitness.emplace_back([&, t](const std::vector<double> &genes) {
+            RigidBlockAnalysis &a = *analyses[t];
+            try
               {
-                ++n_failed;
+                a.mesh_vertices = a.vertices_from_genes(genes);
+                const double f  = a.evaluate(context);
+                // patches glued along moved lines must stay glued
+                if (a.model->interfaces().size() != n_interfaces_uniform)
+                  {
+                    ++failed[t];
+                    return -std::numeric_limits<double>::infinity();
+                  }
+                return f;
+              }
+            catch (const std::exception &)
+              {
+                ++failed[t];
                 return -std::numeric_limits<double>::infinity();
               }
-            return f;
-          }
-        catch (const std::exception &)
-          {
-            ++n_failed;
-            return -std::numeric_limits<double>::infinity();
-          }
-      };
-      const double uniform = fitness(x0);
+          });
+        }
+      const double uniform = fitness[0](x0);
       const auto   result =
         optimiser->optimise(context.mpi_communicator,
                             fitness,
@@ -329,7 +351,10 @@ namespace masonry
       const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
           .count();
-      quiet            = false;
+      quiet                  = false;
+      unsigned long n_failed = 0;
+      for (const auto f : failed)
+        n_failed += f;
       mesh_vertices    = vertices_from_genes(result.best_genes);
       seconds_geometry = seconds_assembly = seconds_solve = 0;
       n_solves = n_iterations = 0;
@@ -342,8 +367,10 @@ namespace masonry
       a["generations"] =
         result.history.empty() ? 0 : result.history.back().generation;
       a["evaluations"] = result.evaluations + 1;
+      a["threads"]     = analyses.size();
       a["islands"] =
-        dealii::Utilities::MPI::n_mpi_processes(context.mpi_communicator);
+        dealii::Utilities::MPI::n_mpi_processes(context.mpi_communicator) *
+        analyses.size();
       a["failed_evaluations"]     = n_failed;
       a["seconds"]                = seconds;
       a["evaluations_per_second"] = (result.evaluations + 1) / seconds;

@@ -61,18 +61,18 @@ namespace masonry
       active() const;
 
       /**
-       * Maximise @p fitness over [0, 1]^n with n = x0.size(), from a
-       * population that contains @p x0. @p progress is called after every
+       * Maximise the fitness over [0, 1]^n with n = x0.size(), from
+       * populations that contain @p x0. @p progress is called after every
        * generation. Non-finite fitness values count as the worst. Every rank
-       * of @p comm evolves an island of its own (see run_pagmo()); the
+       * of @p comm evolves @p fitness.size() islands (one per thread, `
+       * Threads'), island t calling fitness[t] only (see run_pagmo()); the
        * result is the same on all ranks.
        */
       virtual Result
-      optimise(
-        const MPI_Comm                                            comm,
-        const std::function<double(const std::vector<double> &)> &fitness,
-        const std::vector<double>                                &x0,
-        const std::function<void(const Generation &)>            &progress) = 0;
+      optimise(const MPI_Comm                                 comm,
+               const std::vector<Fitness>                    &fitness,
+               const std::vector<double>                     &x0,
+               const std::function<void(const Generation &)> &progress) = 0;
 
       /** Population size. */
       unsigned int population_size = 16;
@@ -82,6 +82,8 @@ namespace masonry
       unsigned int seed = 1;
       /** Stop after this many generations without improvement (0: never). */
       unsigned int stall_generations = 5;
+      /** Islands (threads) per MPI rank. */
+      unsigned int threads = 1;
       /** Whether interior vertices move too (`Mesh genes = vertices`). */
       bool vertex_genes = false;
       /** Smallest block size, as a fraction of the parameter range. */

@@ -60,16 +60,24 @@ namespace masonry
       double parameter_1, parameter_2;
     };
 
+    /** A fitness function (the quantity maximised). */
+    using Fitness = std::function<double(const std::vector<double> &)>;
+
     /**
-     * Maximise @p fitness over [0, 1]^n (n = x0.size()) with a pagmo
-     * algorithm, evolving one generation at a time from a population that
-     * contains @p x0; non-finite fitness values count as the worst.
+     * Maximise the fitness over [0, 1]^n (n = x0.size()) with a pagmo
+     * algorithm, evolving one generation at a time from populations that
+     * contain @p x0; non-finite fitness values count as the worst. Every
+     * rank holds @p fitness.size() islands, evolved in parallel threads,
+     * island t calling fitness[t] only (so the functions need not be
+     * thread-safe with themselves); after every generation the best mesh
+     * of all islands of all ranks migrates to every island. A fixed seed
+     * gives the same result for the same numbers of ranks and threads.
      */
     Result
-    run_pagmo(const MPI_Comm       comm,
-              const PagmoSettings &settings,
-              const std::function<double(const std::vector<double> &)> &fitness,
-              const std::vector<double>                                &x0,
+    run_pagmo(const MPI_Comm                                 comm,
+              const PagmoSettings                           &settings,
+              const std::vector<Fitness>                    &fitness,
+              const std::vector<double>                     &x0,
               const std::function<void(const Generation &)> &progress);
   } // namespace adaptation
 } // namespace masonry

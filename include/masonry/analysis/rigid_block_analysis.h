@@ -214,6 +214,15 @@ namespace masonry
       std::string optimiser_name;
       /** True while the adaptation evaluates meshes: no screen output. */
       bool quiet = false;
+      /**
+       * Copies of this analysis for the adaptation's other threads
+       * (`Adaptation/Threads' − 1), each set up from the same parameters
+       * with its own geometry, LP solver and blocks, so that islands are
+       * evaluated concurrently without sharing any mutable state.
+       */
+      std::vector<std::unique_ptr<RigidBlockAnalysis>> workers;
+      /** Whether this analysis is such a copy (it makes none itself). */
+      bool is_worker = false;
 
       /** The subsection name (for error messages). */
       std::string section;
