@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# Every shipped example must pass `masonry --validate` (parameters parse,
+# geometry and meshes build): a renamed or removed entry breaks no example
+# silently. Usage: examples_validate.sh MASONRY EXAMPLES_DIR
+set -u
+masonry=$1
+failed=0
+n=0
+for prm in "$2"/*.prm; do
+  n=$((n + 1))
+  if ! out=$("$masonry" --validate "$prm" 2>&1); then
+    echo "FAILED: $(basename "$prm"): $out"
+    failed=1
+  fi
+done
+if [[ $n == 0 ]]; then
+  echo "FAILED: no examples in $2"
+  exit 1
+fi
+[[ $failed == 0 ]] && echo "OK: all $n examples validate"
+exit $failed
