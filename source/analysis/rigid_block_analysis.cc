@@ -357,6 +357,10 @@ namespace masonry
         n_failed += f;
       mesh_vertices    = vertices_from_genes(result.best_genes);
       seconds_geometry = seconds_assembly = seconds_solve = 0;
+      // the other threads' copies are not needed for the final analysis
+      const unsigned int n_threads = analyses.size();
+      analyses.resize(1);
+      workers.clear();
       n_solves = n_iterations = 0;
 
       Json a               = Json::object();
@@ -367,10 +371,10 @@ namespace masonry
       a["generations"] =
         result.history.empty() ? 0 : result.history.back().generation;
       a["evaluations"] = result.evaluations + 1;
-      a["threads"]     = analyses.size();
+      a["threads"]     = n_threads;
       a["islands"] =
         dealii::Utilities::MPI::n_mpi_processes(context.mpi_communicator) *
-        analyses.size();
+        n_threads;
       a["failed_evaluations"]     = n_failed;
       a["seconds"]                = seconds;
       a["evaluations_per_second"] = (result.evaluations + 1) / seconds;
