@@ -179,6 +179,17 @@ namespace masonry
                           "(solution.pvd: displacement in m, stress in Pa, "
                           "MPI subdomain; interfaces.pvd: damage, normal "
                           "opening and slip in m, joint type).");
+        prm.declare_entry(
+          "Output format",
+          "vtu",
+          Selection("vtu|hdf5"),
+          "Format of the brick fields when `Write VTU' is true: `vtu' "
+          "writes solution.pvd with solution_NNNN.pvtu and one .vtu per "
+          "rank; `hdf5' writes solution.xdmf with one solution_NNNN.h5 per "
+          "output step (mesh and fields, written in parallel by all ranks; "
+          "open solution.xdmf in ParaView with the XDMF reader). The "
+          "interfaces are written as interfaces.pvd / interfaces_NNNN.vtu in "
+          "both cases.");
         prm.declare_entry("Gauge length",
                           "0",
                           Double(0),
@@ -403,6 +414,7 @@ namespace masonry
         s.gauss            = prm.get("Interface integration") == "gauss";
         s.vtu_interval     = prm.get_integer("Output interval");
         s.write_vtu        = prm.get_bool("Write VTU");
+        s.hdf5             = prm.get("Output format") == "hdf5";
         s.write_plot       = prm.get_bool("Write plot");
         s.bonded           = prm.get("Joints") == "bonded";
         s.write_calculix   = prm.get_bool("Write CalculiX input");

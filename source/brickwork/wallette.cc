@@ -331,6 +331,8 @@ namespace masonry
           n_joints_of_type{{0, 0, 0}};
         std::vector<CurvePoint>                     curve;
         std::vector<std::pair<double, std::string>> pvd, pvd_interfaces;
+        /** The steps of solution.xdmf (`Output format = hdf5'). */
+        std::vector<XDMFEntry> xdmf;
         /** DOFs of the two gauge points and their distance. */
         std::array<std::array<types::global_dof_index, 3>, 2> gauge_dofs;
         double                                                gauge_span = 0;
@@ -1494,9 +1496,37 @@ namespace masonry
           data_out.add_data_vector(removed, "deleted");
         data_out.build_patches();
         const std::string dir = context.output.path();
-        const std::string pvtu =
-          data_out.write_vtu_with_pvtu_record(dir, "solution", step, comm, 4);
-        pvd.emplace_back(time, pvtu);
+        if (settings.hdf5)
+          {
+            // mesh and fields of this step in one HDF5 file, written by all
+            // ranks; solution.xdmf lists the steps with their times
+            DataOutBase::DataOutFilter filter(
+              DataOutBase::DataOutFilterFlags(false, true));
+            data_out.write_filtered_data(filter);
+            const std::string h5 =
+              "solution_" + Utilities::int_to_string(step, 4) + ".h5";
+            data_out.write_hdf5_parallel(filter, dir + h5, comm);
+            xdmf.push_back(data_out.create_xdmf_entry(filter, h5, time, comm));
+            data_out.write_xdmf_file(xdmf, dir + "solution.xdmf", comm);
+            context.output.file(h5);
+            context.output.file("solution.xdmf");
+          }
+        else
+          {
+            const std::string pvtu = data_out.write_vtu_with_pvtu_record(
+              dir, "solution", step, comm, 4);
+            pvd.emplace_back(time, pvtu);
+            // record the files written by DataOut
+            context.output.file(pvtu);
+            const std::string stem =
+              "solution_" + Utilities::int_to_string(step, 4);
+            const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+            for (unsigned int r = 0; r < n_ranks; ++r)
+              context.output.file(stem + "." +
+                                  Utilities::int_to_string(
+                                    r, Utilities::needed_digits(n_ranks - 1)) +
+                                  ".vtu");
+          }
 
         // interfaces: one quadrilateral per face pair, cell data averaged
         // over the integration points
@@ -1573,21 +1603,13 @@ namespace masonry
             array("joint_type_bed0_head1_collar2", type);
             out << "</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
           }
-        // record the files written by DataOut
-        context.output.file(pvtu);
-        const std::string stem =
-          "solution_" + Utilities::int_to_string(step, 4);
-        for (unsigned int r = 0; r < Utilities::MPI::n_mpi_processes(comm); ++r)
-          context.output.file(stem + "." +
-                              Utilities::int_to_string(
-                                r,
-                                Utilities::needed_digits(
-                                  Utilities::MPI::n_mpi_processes(comm) - 1)) +
-                              ".vtu");
         if (Utilities::MPI::this_mpi_process(comm) == 0)
           {
-            std::ofstream pvd_out(context.output.file("solution.pvd"));
-            DataOutBase::write_pvd_record(pvd_out, pvd);
+            if (!settings.hdf5)
+              {
+                std::ofstream pvd_out(context.output.file("solution.pvd"));
+                DataOutBase::write_pvd_record(pvd_out, pvd);
+              }
             std::ofstream pvd_i(context.output.file("interfaces.pvd"));
             DataOutBase::write_pvd_record(pvd_i, pvd_interfaces);
           }

@@ -56,6 +56,9 @@ namespace masonry
       unsigned int vtu_interval = 10;
       /** Write VTU/PVD at all. */
       bool write_vtu = true;
+      /** Brick fields as HDF5 + XDMF (solution.xdmf, solution_NNNN.h5)
+       * instead of VTU/PVTU + PVD. */
+      bool hdf5 = false;
       /** Render curve.png with matplotlib. */
       bool write_plot = true;
       /** Print one line per converged step. */
