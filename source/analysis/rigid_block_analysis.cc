@@ -359,7 +359,6 @@ namespace masonry
       seconds_geometry = seconds_assembly = seconds_solve = 0;
       // the other threads' copies are not needed for the final analysis
       const unsigned int n_threads = analyses.size();
-      analyses.resize(1);
       workers.clear();
       n_solves = n_iterations = 0;
 

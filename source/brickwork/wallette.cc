@@ -212,6 +212,10 @@ namespace masonry
         interface_jumps(const InterfaceFace   &face,
                         const Vector<double>  &ue,
                         std::array<Local3, 4> &jumps) const;
+        /** The four bilinear shape values of a face at its point q
+         * (q = qx + 2 qy). */
+        std::array<double, 4>
+        face_shapes(const unsigned int q) const;
         /** Local force vector and (if @p ki) tangent of @p face from the
          * tractions and tangents at its points. */
         void
@@ -1115,23 +1119,26 @@ namespace masonry
                              std::array<Local3, 4> &jumps) const
       {
         const unsigned int a = face.axis;
-        for (unsigned int qy = 0; qy < 2; ++qy)
-          for (unsigned int qx = 0; qx < 2; ++qx)
-            {
-              const double xi = q_points[qx], eta = q_points[qy];
-              const double N[4] = {(1 - xi) * (1 - eta),
-                                   xi * (1 - eta),
-                                   (1 - xi) * eta,
-                                   xi * eta};
-              Local3      &jump = jumps[qx + 2 * qy];
-              jump              = {{0, 0, 0}};
-              for (unsigned int v = 0; v < 4; ++v)
-                for (unsigned int k = 0; k < 3; ++k)
-                  {
-                    const unsigned int d = (a + k) % 3;
-                    jump[k] += N[v] * (ue[12 + 3 * v + d] - ue[3 * v + d]);
-                  }
-            }
+        for (unsigned int q = 0; q < 4; ++q)
+          {
+            const auto N    = face_shapes(q);
+            Local3    &jump = jumps[q];
+            jump            = {{0, 0, 0}};
+            for (unsigned int v = 0; v < 4; ++v)
+              for (unsigned int k = 0; k < 3; ++k)
+                {
+                  const unsigned int d = (a + k) % 3;
+                  jump[k] += N[v] * (ue[12 + 3 * v + d] - ue[3 * v + d]);
+                }
+          }
+      }
+
+      std::array<double, 4>
+      Model::face_shapes(const unsigned int q) const
+      {
+        const double xi = q_points[q % 2], eta = q_points[q / 2];
+        return {
+          {(1 - xi) * (1 - eta), xi * (1 - eta), (1 - xi) * eta, xi * eta}};
       }
 
       void
@@ -1149,11 +1156,7 @@ namespace masonry
           for (unsigned int qx = 0; qx < 2; ++qx)
             {
               const unsigned int q  = qx + 2 * qy;
-              const double       xi = q_points[qx], eta = q_points[qy];
-              const double       N[4] = {(1 - xi) * (1 - eta),
-                                         xi * (1 - eta),
-                                         (1 - xi) * eta,
-                                         xi * eta};
+              const auto         N  = face_shapes(q);
               const double       dA = face.area * q_weights[qx] * q_weights[qy];
               const Local3      &t  = tractions[q];
               const Local33     &D  = tangents[q];
