@@ -42,12 +42,15 @@ namespace
   double
   error(const InterfaceLaw &l, const double r, const Local3 &jump)
   {
-    const double     k[3] = {2.5e11, 1e11, 1e11};
-    InterfacePoint   point;
-    InterfaceHistory old, updated, older;
-    Local3           t;
-    Local33          D;
-    double           e = 0;
+    const double   k[3] = {2.5e11, 1e11, 1e11};
+    InterfacePoint point;
+    // the law's own state layout; its damage is the reported damage
+    const unsigned int n =
+      masonry::brickwork::n_state_values(l.state_variables());
+    std::vector<double> old(n, 0.), updated(n, 0.), older(n, 0.), damage(1);
+    Local3              t;
+    Local33             D;
+    double              e = 0;
     for (unsigned int pass = 0; pass < 2; ++pass)
       {
         if (pass == 0)
@@ -57,7 +60,8 @@ namespace
             old = older = updated; // damage 1, no growth to extrapolate
             l.evaluate_extrapolated(jump, old, older, 1., point, t, D);
           }
-        if (pass == 0 && updated.damage != 1)
+        l.damages(updated, damage);
+        if (pass == 0 && damage[0] != 1)
           return 1e300;
         for (unsigned int i = 0; i < 3; ++i)
           {

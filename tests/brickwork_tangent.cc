@@ -24,7 +24,31 @@
 using namespace dealii;
 using masonry::brickwork::BrickMaterial;
 using masonry::brickwork::BrickPoint;
-using masonry::brickwork::BrickState;
+
+namespace
+{
+  /** A state of the material's own layout with the given damages and
+   * plastic strain (the other variables zero). */
+  std::vector<double>
+  state(const BrickMaterial         &material,
+        const double                 damage_t,
+        const double                 damage_c,
+        const SymmetricTensor<2, 3> &plastic)
+  {
+    std::vector<double> v;
+    for (const auto &var : material.state_variables())
+      if (var.name == "damage_tension")
+        v.push_back(damage_t);
+      else if (var.name == "damage_compression")
+        v.push_back(damage_c);
+      else if (var.name == "plastic_strain")
+        for (unsigned int k = 0; k < 6; ++k)
+          v.push_back(plastic.access_raw_entry(k));
+      else
+        v.insert(v.end(), var.n_components, 0.);
+    return v;
+  }
+} // namespace
 
 int
 main(int argc, char **argv)
@@ -55,22 +79,25 @@ main(int argc, char **argv)
       if (n % 10 == 2) // lateral principal values in the blended band
         strain = SymmetricTensor<2, 3>(
           {1e-8 * u(random), 2e-8 * u(random), -e0, 0., 0., 0.});
-      BrickState old, older;
-      const bool intact = n % 10 == 3;
+      double                older_t = 0, older_c = 0, old_t = 0, old_c = 0;
+      SymmetricTensor<2, 3> older_p, old_p;
+      const bool            intact = n % 10 == 3;
       if (!intact)
         {
-          older.damage_t = d(random);
-          older.damage_c = d(random);
-          old.damage_t   = older.damage_t + 0.1 * d(random);
-          old.damage_c   = older.damage_c + 0.1 * d(random);
+          older_t = d(random);
+          older_c = d(random);
+          old_t   = older_t + 0.1 * d(random);
+          old_c   = older_c + 0.1 * d(random);
           for (unsigned int i = 0; i < 3; ++i)
             for (unsigned int j = i; j < 3; ++j)
               {
-                older.plastic_strain[i][j] = 0.2 * e0 * u(random);
-                old.plastic_strain[i][j] =
-                  older.plastic_strain[i][j] + 0.05 * e0 * u(random);
+                older_p[i][j] = 0.2 * e0 * u(random);
+                old_p[i][j]   = older_p[i][j] + 0.05 * e0 * u(random);
               }
         }
+      const std::vector<double> old = state(*material, old_t, old_c, old_p),
+                                older =
+                                  state(*material, older_t, older_c, older_p);
       const double          ratio = intact ? 0. : 1.5 * d(random);
       SymmetricTensor<2, 3> stress, sp, sm;
       SymmetricTensor<4, 3> C, scratch;

@@ -381,15 +381,15 @@ namespace masonry
                                    "must be positive, got " + prm.get(entry)));
           return v;
         };
-        s.size.length      = positive("Brick length") + joint;
-        s.size.width       = positive("Brick width") + joint;
-        s.size.height      = positive("Brick height") + joint;
-        s.size.courses     = prm.get_integer("Courses");
-        s.size.bricks_long = prm.get_integer("Length in bricks");
-        s.n_l              = prm.get_integer("Elements along the length");
-        s.n_w              = prm.get_integer("Elements along the width");
-        s.n_h              = prm.get_integer("Elements along the height");
-        s.lateral_fixed    = prm.get("Platen lateral restraint") == "fixed";
+        s.mesh.size.length      = positive("Brick length") + joint;
+        s.mesh.size.width       = positive("Brick width") + joint;
+        s.mesh.size.height      = positive("Brick height") + joint;
+        s.mesh.size.courses     = prm.get_integer("Courses");
+        s.mesh.size.bricks_long = prm.get_integer("Length in bricks");
+        s.mesh.n_l              = prm.get_integer("Elements along the length");
+        s.mesh.n_w              = prm.get_integer("Elements along the width");
+        s.mesh.n_h              = prm.get_integer("Elements along the height");
+        s.platen.lateral_fixed = prm.get("Platen lateral restraint") == "fixed";
         const auto dir =
           split_doubles(prm.get("Platen direction"), "Platen direction");
         const double norm =
@@ -397,49 +397,52 @@ namespace masonry
         AssertThrow(norm > 0,
                     ExcParameter("Platen direction", "must not be zero"));
         for (unsigned int d = 0; d < 3; ++d)
-          s.direction[d] = dir[d] / norm;
-        AssertThrow(s.lateral_fixed || (dir[0] == 0 && dir[1] == 0),
+          s.platen.direction[d] = dir[d] / norm;
+        AssertThrow(s.platen.lateral_fixed || (dir[0] == 0 && dir[1] == 0),
                     ExcParameter("Platen direction",
                                  "a sideways motion needs `Platen lateral "
                                  "restraint = fixed'"));
-        target_strain      = positive("Target strain");
-        s.n_steps          = prm.get_integer("Number of steps");
-        s.max_cutbacks     = prm.get_integer("Maximum cut-backs");
-        s.growth           = prm.get_double("Step growth factor");
-        s.max_newton       = prm.get_integer("Maximum Newton iterations");
-        s.newton_tolerance = positive("Newton tolerance");
-        s.line_search      = prm.get_bool("Line search");
-        s.linear_solver    = prm.get("Linear solver");
-        s.linear_tolerance = positive("Linear solver tolerance");
-        s.gauss            = prm.get("Interface integration") == "gauss";
-        s.vtu_interval     = prm.get_integer("Output interval");
-        s.write_vtu        = prm.get_bool("Write VTU");
-        s.hdf5             = prm.get("Output format") == "hdf5";
-        s.write_plot       = prm.get_bool("Write plot");
-        s.bonded           = prm.get("Joints") == "bonded";
-        s.write_calculix   = prm.get_bool("Write CalculiX input");
-        AssertThrow(!s.write_calculix || s.bonded,
+        target_strain           = positive("Target strain");
+        s.protocol.n_steps      = prm.get_integer("Number of steps");
+        s.protocol.max_cutbacks = prm.get_integer("Maximum cut-backs");
+        s.protocol.growth       = prm.get_double("Step growth factor");
+        s.newton.max_newton     = prm.get_integer("Maximum Newton iterations");
+        s.newton.newton_tolerance        = positive("Newton tolerance");
+        s.newton.line_search             = prm.get_bool("Line search");
+        s.linear_solver.linear_solver    = prm.get("Linear solver");
+        s.linear_solver.linear_tolerance = positive("Linear solver tolerance");
+        s.mesh.gauss            = prm.get("Interface integration") == "gauss";
+        s.output.vtu_interval   = prm.get_integer("Output interval");
+        s.output.write_vtu      = prm.get_bool("Write VTU");
+        s.output.hdf5           = prm.get("Output format") == "hdf5";
+        s.output.write_plot     = prm.get_bool("Write plot");
+        s.mesh.bonded           = prm.get("Joints") == "bonded";
+        s.output.write_calculix = prm.get_bool("Write CalculiX input");
+        AssertThrow(!s.output.write_calculix || s.mesh.bonded,
                     ExcParameter("Write CalculiX input",
                                  "needs `Joints = bonded' (CalculiX has no "
                                  "interfaces of this model)"));
-        s.gauge_length = prm.get_double("Gauge length");
-        cyclic         = prm.get("Protocol") == "cyclic";
+        s.platen.gauge_length = prm.get_double("Gauge length");
+        cyclic                = prm.get("Protocol") == "cyclic";
         amplitudes =
           split_doubles(prm.get("Cycle amplitudes"), "Cycle amplitudes");
-        amplitude_increment    = positive("Amplitude increment");
-        s.cycles_per_amplitude = prm.get_integer("Cycles per amplitude");
-        s.unloading_stress     = prm.get_double("Unloading stress");
-        s.platen_speed         = positive("Platen speed");
-        s.deletion_strain      = prm.get_double("Deletion strain");
-        s.max_deletions        = prm.get_integer("Maximum deletions per step");
-        s.strength_scatter     = prm.get_double("Strength scatter");
-        s.seed                 = prm.get_integer("Random seed");
-        s.checkpoint_interval  = prm.get_integer("Checkpoint interval");
-        s.resume               = prm.get_bool("Resume");
-        s.max_steps            = prm.get_integer("Maximum steps");
-        s.implex               = prm.get("Damage integration") == "implex";
-        s.implex_tolerance     = positive("IMPL-EX damage tolerance");
-        s.implex_minimum_step  = positive("IMPL-EX minimum step");
+        amplitude_increment = positive("Amplitude increment");
+        s.protocol.cycles_per_amplitude =
+          prm.get_integer("Cycles per amplitude");
+        s.protocol.unloading_stress = prm.get_double("Unloading stress");
+        s.protocol.platen_speed     = positive("Platen speed");
+        s.specimen.deletion_strain  = prm.get_double("Deletion strain");
+        s.specimen.max_deletions =
+          prm.get_integer("Maximum deletions per step");
+        s.specimen.strength_scatter = prm.get_double("Strength scatter");
+        s.specimen.seed             = prm.get_integer("Random seed");
+        s.checkpoint.checkpoint_interval =
+          prm.get_integer("Checkpoint interval");
+        s.checkpoint.resume  = prm.get_bool("Resume");
+        s.protocol.max_steps = prm.get_integer("Maximum steps");
+        s.integrator.implex  = prm.get("Damage integration") == "implex";
+        s.integrator.implex_tolerance    = positive("IMPL-EX damage tolerance");
+        s.integrator.implex_minimum_step = positive("IMPL-EX minimum step");
         for (unsigned int i = 1; i < amplitudes.size(); ++i)
           AssertThrow(amplitudes[i] > amplitudes[i - 1],
                       ExcParameter("Cycle amplitudes",
@@ -447,10 +450,10 @@ namespace masonry
                                    "next"));
         AssertThrow(amplitudes.empty() || amplitudes[0] > 0,
                     ExcParameter("Cycle amplitudes", "must be positive"));
-        AssertThrow(!cyclic || !s.write_calculix,
+        AssertThrow(!cyclic || !s.output.write_calculix,
                     ExcParameter("Write CalculiX input",
                                  "needs the monotonic protocol"));
-        s.distortion = prm.get_double("Mesh distortion");
+        s.mesh.distortion = prm.get_double("Mesh distortion");
       }
 
       void
@@ -462,26 +465,27 @@ namespace masonry
         // lay the bricks now so that --validate finds a mesh that does not
         // fit the bond
         plugins::ParsePathScope scope("Wallette");
-        boxes = bond->layout(s.size);
-        brickwork::check_mesh(boxes, s);
-        const double H        = s.size.height * s.size.courses;
-        s.target_displacement = target_strain * H;
-        s.cycle_amplitudes.clear();
+        boxes = bond->layout(s.mesh.size);
+        brickwork::check_mesh(boxes, s.mesh);
+        const double H = s.mesh.size.height * s.mesh.size.courses;
+        s.protocol.target_displacement = target_strain * H;
+        s.protocol.cycle_amplitudes.clear();
         if (cyclic)
           {
             if (amplitudes.empty())
               for (unsigned int k = 1;
                    k * amplitude_increment <= target_strain * (1 + 1e-9);
                    ++k)
-                s.cycle_amplitudes.push_back(k * amplitude_increment * H);
+                s.protocol.cycle_amplitudes.push_back(k * amplitude_increment *
+                                                      H);
             else
               for (const double a : amplitudes)
-                s.cycle_amplitudes.push_back(a * H);
-            AssertThrow(!s.cycle_amplitudes.empty(),
+                s.protocol.cycle_amplitudes.push_back(a * H);
+            AssertThrow(!s.protocol.cycle_amplitudes.empty(),
                         ExcParameter("Amplitude increment",
                                      "is larger than the target strain: no "
                                      "cycle"));
-            s.target_displacement = s.cycle_amplitudes.back();
+            s.protocol.target_displacement = s.protocol.cycle_amplitudes.back();
           }
       }
 

@@ -50,6 +50,57 @@ namespace masonry
         /** Stress (Pa, positive), plastic strain, damage. */
         double stress = 0, plastic = 0, damage = 0;
       };
+
+      /**
+       * The state of a point as this law uses it; the model stores it as
+       * the flat array of state_variables() (pack(), unpack()).
+       */
+      struct State
+      {
+        /** Plastic strain (dimensionless). */
+        SymmetricTensor<2, 3> plastic_strain;
+        /** Damage thresholds in tension and compression (effective stress,
+         * Pa). */
+        double threshold_t = 0, threshold_c = 0;
+        /** Equivalent plastic strains reached on the two envelopes. */
+        double kappa_t = 0, kappa_c = 0;
+        /** Damage in tension and compression (0 intact to 1), after the
+         * viscous regularisation. */
+        double damage_t = 0, damage_c = 0;
+      };
+
+      /** Number of doubles of a State. */
+      constexpr unsigned int n_state = 12;
+
+      State
+      unpack(ConstStateView v)
+      {
+        AssertDimension(v.size(), n_state);
+        State s;
+        for (unsigned int i = 0; i < 6; ++i)
+          s.plastic_strain.access_raw_entry(i) = v[i];
+        s.threshold_t = v[6];
+        s.threshold_c = v[7];
+        s.kappa_t     = v[8];
+        s.kappa_c     = v[9];
+        s.damage_t    = v[10];
+        s.damage_c    = v[11];
+        return s;
+      }
+
+      void
+      pack(const State &s, StateView v)
+      {
+        AssertDimension(v.size(), n_state);
+        for (unsigned int i = 0; i < 6; ++i)
+          v[i] = s.plastic_strain.access_raw_entry(i);
+        v[6]  = s.threshold_t;
+        v[7]  = s.threshold_c;
+        v[8]  = s.kappa_t;
+        v[9]  = s.kappa_c;
+        v[10] = s.damage_t;
+        v[11] = s.damage_c;
+      }
     } // namespace
 
     /** See the file documentation. */
@@ -205,6 +256,49 @@ namespace masonry
         return false;
       }
 
+      std::vector<StateVariable>
+      state_variables() const override
+      {
+        // the order of pack() and unpack()
+        return {{"plastic_strain", 6},
+                {"threshold_tension", 1},
+                {"threshold_compression", 1},
+                {"kappa_tension", 1},
+                {"kappa_compression", 1},
+                {"damage_tension", 1},
+                {"damage_compression", 1}};
+      }
+
+      std::vector<std::string>
+      reported_quantities() const override
+      {
+        return {"damage_tension", "damage_compression", "plastic_strain_norm"};
+      }
+
+      void
+      report(ConstStateView            state,
+             dealii::ArrayView<double> values) const override
+      {
+        const State s = unpack(state);
+        values[0]     = s.damage_t;
+        values[1]     = s.damage_c;
+        values[2]     = s.plastic_strain.norm();
+      }
+
+      std::vector<std::string>
+      damage_names() const override
+      {
+        return {"damage_tension", "damage_compression"};
+      }
+
+      void
+      damages(ConstStateView            state,
+              dealii::ArrayView<double> values) const override
+      {
+        values[0] = state[10];
+        values[1] = state[11];
+      }
+
       double
       youngs_modulus() const override
       {
@@ -235,8 +329,70 @@ namespace masonry
 
       bool
       is_elastic(const SymmetricTensor<2, 3> &strain,
-                 const BrickState            &old,
+                 ConstStateView               old_state,
                  const BrickPoint            &point) const override
+      {
+        return is_elastic(strain, unpack(old_state), point);
+      }
+
+      void
+      evaluate(const SymmetricTensor<2, 3> &strain,
+               ConstStateView               old_state,
+               const BrickPoint            &point,
+               StateView                    updated_state,
+               SymmetricTensor<2, 3>       &stress,
+               SymmetricTensor<4, 3>       &tangent) const override
+      {
+        const State old = unpack(old_state);
+        State       updated;
+        evaluate(strain, old, point, updated, stress, tangent);
+        pack(updated, updated_state);
+      }
+
+      void
+      update_state(const SymmetricTensor<2, 3> &strain,
+                   ConstStateView               old_state,
+                   const BrickPoint            &point,
+                   StateView                    updated_state,
+                   SymmetricTensor<2, 3>       &stress) const override
+      {
+        State updated;
+        update(strain, unpack(old_state), point, updated, stress);
+        pack(updated, updated_state);
+      }
+
+      void
+      evaluate_extrapolated(const SymmetricTensor<2, 3> &strain,
+                            ConstStateView               old,
+                            ConstStateView               older,
+                            const double                 ratio_t,
+                            const BrickPoint &,
+                            SymmetricTensor<2, 3> &stress,
+                            SymmetricTensor<4, 3> &tangent) const override
+      {
+        extrapolated(
+          strain, unpack(old), unpack(older), ratio_t, stress, &tangent);
+      }
+
+      void
+      extrapolated_stress(const SymmetricTensor<2, 3> &strain,
+                          ConstStateView               old,
+                          ConstStateView               older,
+                          const double                 ratio_t,
+                          const BrickPoint &,
+                          SymmetricTensor<2, 3> &stress) const override
+      {
+        extrapolated(
+          strain, unpack(old), unpack(older), ratio_t, stress, nullptr);
+      }
+
+    private:
+      /** Whether the point is intact and inside the initial elastic
+       * domain. */
+      bool
+      is_elastic(const SymmetricTensor<2, 3> &strain,
+                 const State                 &old,
+                 const BrickPoint            &point) const
       {
         if (old.kappa_t != 0 || old.kappa_c != 0 || old.damage_t != 0 ||
             old.damage_c != 0 || old.plastic_strain.norm() != 0)
@@ -251,11 +407,11 @@ namespace masonry
 
       void
       evaluate(const SymmetricTensor<2, 3> &strain,
-               const BrickState            &old,
+               const State                 &old,
                const BrickPoint            &point,
-               BrickState                  &updated,
+               State                       &updated,
                SymmetricTensor<2, 3>       &stress,
-               SymmetricTensor<4, 3>       &tangent) const override
+               SymmetricTensor<4, 3>       &tangent) const
       {
         update(strain, old, point, updated, stress);
         if (is_elastic(strain, old, point))
@@ -264,7 +420,7 @@ namespace masonry
             return;
           }
         auto function = [&](const SymmetricTensor<2, 3> &e) {
-          BrickState            scratch;
+          State                 scratch;
           SymmetricTensor<2, 3> s;
           update(e, old, point, scratch, s);
           return s;
@@ -272,46 +428,12 @@ namespace masonry
         tangent = numerical_tangent(function, strain);
       }
 
-      void
-      update_state(const SymmetricTensor<2, 3> &strain,
-                   const BrickState            &old,
-                   const BrickPoint            &point,
-                   BrickState                  &updated,
-                   SymmetricTensor<2, 3>       &stress) const override
-      {
-        update(strain, old, point, updated, stress);
-      }
-
-      void
-      evaluate_extrapolated(const SymmetricTensor<2, 3> &strain,
-                            const BrickState            &old,
-                            const BrickState            &older,
-                            const double                 ratio_t,
-                            const BrickPoint &,
-                            SymmetricTensor<2, 3> &stress,
-                            SymmetricTensor<4, 3> &tangent) const override
-      {
-        extrapolated(strain, old, older, ratio_t, stress, &tangent);
-      }
-
-      void
-      extrapolated_stress(const SymmetricTensor<2, 3> &strain,
-                          const BrickState            &old,
-                          const BrickState            &older,
-                          const double                 ratio_t,
-                          const BrickPoint &,
-                          SymmetricTensor<2, 3> &stress) const override
-      {
-        extrapolated(strain, old, older, ratio_t, stress, nullptr);
-      }
-
-    private:
       /** IMPL-EX stress and (if @p tangent) tangent, see
        * evaluate_extrapolated(). */
       void
       extrapolated(const SymmetricTensor<2, 3> &strain,
-                   const BrickState            &old,
-                   const BrickState            &older,
+                   const State                 &old,
+                   const State                 &older,
                    const double                 ratio_t,
                    SymmetricTensor<2, 3>       &stress,
                    SymmetricTensor<4, 3>       *tangent) const
@@ -498,9 +620,9 @@ namespace masonry
       /** The stress update (see the file documentation). */
       void
       update(const SymmetricTensor<2, 3> &strain,
-             const BrickState            &old,
+             const State                 &old,
              const BrickPoint            &point,
-             BrickState                  &updated,
+             State                       &updated,
              SymmetricTensor<2, 3>       &stress) const
       {
         const double phi = point.strength_factor;

@@ -14,6 +14,38 @@ namespace masonry
 {
   namespace brickwork
   {
+    unsigned int
+    n_state_values(const std::vector<StateVariable> &variables)
+    {
+      unsigned int n = 0;
+      for (const auto &v : variables)
+        n += v.n_components;
+      return n;
+    }
+
+    std::vector<std::string>
+    component_names(const std::vector<StateVariable> &variables)
+    {
+      std::vector<std::string> names;
+      for (const auto &v : variables)
+        if (v.n_components == 1)
+          names.push_back(v.name);
+        else
+          for (unsigned int c = 0; c < v.n_components; ++c)
+            names.push_back(v.name + "_" + std::to_string(c));
+      return names;
+    }
+
+    namespace
+    {
+      void
+      copy_state(ConstStateView state, dealii::ArrayView<double> values)
+      {
+        AssertDimension(state.size(), values.size());
+        std::copy(state.begin(), state.end(), values.begin());
+      }
+    } // namespace
+
     double
     lourenco_rots_stiffness(const double E_u,
                             const double E_m,
@@ -88,17 +120,69 @@ namespace masonry
     {}
 
     void
-    InterfaceLaw::evaluate_extrapolated(const Local3           &jump,
-                                        const InterfaceHistory &old,
-                                        const InterfaceHistory &,
+    InterfaceLaw::evaluate_extrapolated(const Local3  &jump,
+                                        ConstStateView old,
+                                        ConstStateView,
                                         const double,
                                         const InterfacePoint &point,
                                         Local3               &t,
                                         Local33              &tangent) const
     {
-      InterfaceHistory scratch;
+      std::vector<double> scratch(old.size());
       evaluate(jump, old, point, scratch, t, tangent);
     }
+
+    bool
+    InterfaceLaw::is_elastic(const Local3 &,
+                             ConstStateView,
+                             const InterfacePoint &) const
+    {
+      return is_linear();
+    }
+
+    Local33
+    InterfaceLaw::elastic_tangent() const
+    {
+      Local33 D{};
+      D[0][0] = normal_stiffness;
+      D[1][1] = D[2][2] = shear_stiffness;
+      return D;
+    }
+
+    std::vector<StateVariable>
+    InterfaceLaw::state_variables() const
+    {
+      return {};
+    }
+
+    void
+    InterfaceLaw::initial_state(StateView state) const
+    {
+      std::fill(state.begin(), state.end(), 0.);
+    }
+
+    std::vector<std::string>
+    InterfaceLaw::reported_quantities() const
+    {
+      return component_names(state_variables());
+    }
+
+    void
+    InterfaceLaw::report(ConstStateView            state,
+                         dealii::ArrayView<double> values) const
+    {
+      copy_state(state, values);
+    }
+
+    std::vector<std::string>
+    InterfaceLaw::damage_names() const
+    {
+      return {};
+    }
+
+    void
+    InterfaceLaw::damages(ConstStateView, dealii::ArrayView<double>) const
+    {}
 
     /** Linear joints: t = diag(k_n, k_s, k_s) [u]. */
     class ElasticInterface : public InterfaceLaw
@@ -110,9 +194,9 @@ namespace masonry
 
       void
       evaluate(const Local3 &jump,
-               const InterfaceHistory &,
+               ConstStateView,
                const InterfacePoint &,
-               InterfaceHistory &,
+               StateView,
                Local3  &t,
                Local33 &tangent) const override
       {
@@ -142,6 +226,49 @@ namespace masonry
     class BilinearInterface : public InterfaceLaw
     {
     public:
+      /**
+       * The state: the damage acting on the tractions (after the viscous
+       * regularisation) and the damage of the law without viscosity (the
+       * envelope reached).
+       */
+      enum StateIndex : unsigned int
+      {
+        damage_index          = 0,
+        damage_inviscid_index = 1
+      };
+
+      std::vector<StateVariable>
+      state_variables() const override
+      {
+        return {{"damage", 1}, {"damage_inviscid", 1}};
+      }
+
+      std::vector<std::string>
+      reported_quantities() const override
+      {
+        return {"damage"};
+      }
+
+      void
+      report(ConstStateView            state,
+             dealii::ArrayView<double> values) const override
+      {
+        values[0] = state[damage_index];
+      }
+
+      std::vector<std::string>
+      damage_names() const override
+      {
+        return {"damage"};
+      }
+
+      void
+      damages(ConstStateView            state,
+              dealii::ArrayView<double> values) const override
+      {
+        values[0] = state[damage_index];
+      }
+
       static void
       declare_parameters(dealii::ParameterHandler &prm)
       {
@@ -260,26 +387,29 @@ namespace masonry
       }
 
       void
-      evaluate(const Local3           &jump,
-               const InterfaceHistory &old,
-               const InterfacePoint   &point,
-               InterfaceHistory       &updated,
-               Local3                 &t,
-               Local33                &tangent) const override
+      evaluate(const Local3         &jump,
+               ConstStateView        old_state,
+               const InterfacePoint &point,
+               StateView             updated_state,
+               Local3               &t,
+               Local33              &tangent) const override
       {
-        const double k[3]       = {normal_stiffness,
-                                   shear_stiffness,
-                                   shear_stiffness};
-        const double phi        = point.strength_factor;
-        const double trial      = damage(jump, phi);
-        const bool   loading    = trial > old.damage_inviscid;
-        updated.damage_inviscid = std::max(old.damage_inviscid, trial);
+        const double old_damage          = old_state[damage_index];
+        const double old_damage_inviscid = old_state[damage_inviscid_index];
+        const double k[3]                = {normal_stiffness,
+                                            shear_stiffness,
+                                            shear_stiffness};
+        const double phi                 = point.strength_factor;
+        const double trial               = damage(jump, phi);
+        const bool   loading             = trial > old_damage_inviscid;
+        const double inviscid            = std::max(old_damage_inviscid, trial);
+        updated_state[damage_inviscid_index] = inviscid;
         // viscous regularisation: d_v = (d + a d_v,old) / (1 + a)
-        const double a = viscosity > 0 && point.time_step > 0 ?
-                           viscosity / point.time_step :
-                           0.;
-        const double d = (updated.damage_inviscid + a * old.damage) / (1 + a);
-        updated.damage = d;
+        const double a              = viscosity > 0 && point.time_step > 0 ?
+                                        viscosity / point.time_step :
+                                        0.;
+        const double d              = (inviscid + a * old_damage) / (1 + a);
+        updated_state[damage_index] = d;
         // no damage of the normal stiffness in compression
         const double dc   = std::min(d, d_max);
         const double f[3] = {jump[0] > 0 ? 1 - dc : 1., 1 - dc, 1 - dc};
@@ -314,31 +444,30 @@ namespace masonry
       }
 
       bool
-      is_elastic(const Local3           &jump,
-                 const InterfaceHistory &old,
-                 const InterfacePoint   &point) const override
+      is_elastic(const Local3         &jump,
+                 ConstStateView        old,
+                 const InterfacePoint &point) const override
       {
         // intact and below the damage onset: evaluate() keeps d = 0 (also
         // with viscosity) and the extrapolated damage of intact states is 0
-        return old.damage == 0 && old.damage_inviscid == 0 &&
+        return old[damage_index] == 0 && old[damage_inviscid_index] == 0 &&
                damage(jump, point.strength_factor) == 0;
       }
 
       void
-      evaluate_extrapolated(const Local3           &jump,
-                            const InterfaceHistory &old,
-                            const InterfaceHistory &older,
-                            const double            ratio,
+      evaluate_extrapolated(const Local3  &jump,
+                            ConstStateView old,
+                            ConstStateView older,
+                            const double   ratio,
                             const InterfacePoint &,
                             Local3  &t,
                             Local33 &tangent) const override
       {
         // the damage extrapolated in pseudo-time, frozen within the step:
         // the joint is linear but for the contact switch of the normal
+        const double d_old = old[damage_index], d_older = older[damage_index];
         const double d =
-          std::min(std::clamp(old.damage + ratio * (old.damage - older.damage),
-                              old.damage,
-                              1.),
+          std::min(std::clamp(d_old + ratio * (d_old - d_older), d_old, 1.),
                    d_max);
         const double k[3] = {normal_stiffness,
                              shear_stiffness,
@@ -382,6 +511,41 @@ namespace masonry
     BrickMaterial::parse_parameters(dealii::ParameterHandler &)
     {}
 
+    std::vector<StateVariable>
+    BrickMaterial::state_variables() const
+    {
+      return {};
+    }
+
+    void
+    BrickMaterial::initial_state(StateView state) const
+    {
+      std::fill(state.begin(), state.end(), 0.);
+    }
+
+    std::vector<std::string>
+    BrickMaterial::reported_quantities() const
+    {
+      return component_names(state_variables());
+    }
+
+    void
+    BrickMaterial::report(ConstStateView            state,
+                          dealii::ArrayView<double> values) const
+    {
+      copy_state(state, values);
+    }
+
+    std::vector<std::string>
+    BrickMaterial::damage_names() const
+    {
+      return {};
+    }
+
+    void
+    BrickMaterial::damages(ConstStateView, dealii::ArrayView<double>) const
+    {}
+
     dealii::SymmetricTensor<4, 3>
     BrickMaterial::elastic_stiffness() const
     {
@@ -396,22 +560,22 @@ namespace masonry
 
     void
     BrickMaterial::evaluate(const dealii::SymmetricTensor<2, 3> &strain,
-                            const BrickState                    &old,
+                            ConstStateView                       old,
                             const BrickPoint &,
-                            BrickState                    &updated,
+                            StateView                      updated,
                             dealii::SymmetricTensor<2, 3> &stress,
                             dealii::SymmetricTensor<4, 3> &tangent) const
     {
       tangent = elastic_stiffness();
       stress  = tangent * strain;
-      updated = old;
+      std::copy(old.begin(), old.end(), updated.begin());
     }
 
     void
     BrickMaterial::extrapolated_stress(
       const dealii::SymmetricTensor<2, 3> &strain,
-      const BrickState                    &old,
-      const BrickState                    &older,
+      ConstStateView                       old,
+      ConstStateView                       older,
       const double                         ratio,
       const BrickPoint                    &point,
       dealii::SymmetricTensor<2, 3>       &stress) const
@@ -422,9 +586,9 @@ namespace masonry
 
     void
     BrickMaterial::update_state(const dealii::SymmetricTensor<2, 3> &strain,
-                                const BrickState                    &old,
+                                ConstStateView                       old,
                                 const BrickPoint                    &point,
-                                BrickState                          &updated,
+                                StateView                            updated,
                                 dealii::SymmetricTensor<2, 3> &stress) const
     {
       dealii::SymmetricTensor<4, 3> tangent;
@@ -438,20 +602,20 @@ namespace masonry
     void
     BrickMaterial::evaluate_extrapolated(
       const dealii::SymmetricTensor<2, 3> &strain,
-      const BrickState                    &old,
-      const BrickState &,
+      ConstStateView                       old,
+      ConstStateView,
       const double,
       const BrickPoint              &point,
       dealii::SymmetricTensor<2, 3> &stress,
       dealii::SymmetricTensor<4, 3> &tangent) const
     {
-      BrickState scratch;
+      std::vector<double> scratch(old.size());
       evaluate(strain, old, point, scratch, stress, tangent);
     }
 
     bool
     BrickMaterial::is_elastic(const dealii::SymmetricTensor<2, 3> &,
-                              const BrickState &,
+                              ConstStateView,
                               const BrickPoint &) const
     {
       return is_linear();

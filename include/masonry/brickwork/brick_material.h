@@ -6,6 +6,7 @@
 #ifndef masonry_brickwork_brick_material_h
 #define masonry_brickwork_brick_material_h
 
+#include <masonry/brickwork/state.h>
 #include <masonry/core/plugins.h>
 
 #include <deal.II/base/symmetric_tensor.h>
@@ -14,40 +15,6 @@ namespace masonry
 {
   namespace brickwork
   {
-    /**
-     * State of a brick integration point: everything a material needs from
-     * the last converged step. Materials that have no history leave it at
-     * its initial values. Stored per quadrature point with deal.II's
-     * CellDataStorage and written to checkpoints by serialize().
-     */
-    struct BrickState
-    {
-      /** Plastic strain (dimensionless). */
-      dealii::SymmetricTensor<2, 3> plastic_strain;
-      /**
-       * Damage thresholds in tension and compression, as effective stress
-       * (Pa); 0 until the first evaluation sets them to the initial
-       * strengths.
-       */
-      double threshold_t = 0, threshold_c = 0;
-      /** Equivalent plastic strains reached on the two envelopes. */
-      double kappa_t = 0, kappa_c = 0;
-      /**
-       * Damage in tension and compression (0 intact to 1), after the
-       * viscous regularisation when the material has one.
-       */
-      double damage_t = 0, damage_c = 0;
-
-      /** Write or read the state (boost serialisation). */
-      template <class Archive>
-      void
-      serialize(Archive &ar, const unsigned int)
-      {
-        ar &plastic_strain &threshold_t &threshold_c &kappa_t &kappa_c &damage_t
-          &damage_c;
-      }
-    };
-
     /** What a material needs to know about the point besides its strain. */
     struct BrickPoint
     {
@@ -68,7 +35,16 @@ namespace masonry
       double strength_factor = 1;
     };
 
-    /** Base class of brick materials. */
+    /**
+     * Base class of brick materials. A material declares its own state
+     * (state_variables(): names and sizes, stored by the model per
+     * integration point as flat arrays and handed to the material as
+     * views), its elastic stiffness (elastic_stiffness(), anisotropic
+     * allowed: the model's elastic cell matrices use it) and what it reports
+     * (reported_quantities(): cell averages in the VTU output;
+     * damage_names(): largest values in curve.csv and summary.json, the
+     * IMPL-EX damage error).
+     */
     class BrickMaterial
     {
     public:
@@ -122,9 +98,9 @@ namespace masonry
        */
       virtual void
       evaluate(const dealii::SymmetricTensor<2, 3> &strain,
-               const BrickState                    &old,
+               ConstStateView                       old,
                const BrickPoint                    &point,
-               BrickState                          &updated,
+               StateView                            updated,
                dealii::SymmetricTensor<2, 3>       &stress,
                dealii::SymmetricTensor<4, 3>       &tangent) const;
 
@@ -136,9 +112,9 @@ namespace masonry
        */
       virtual void
       update_state(const dealii::SymmetricTensor<2, 3> &strain,
-                   const BrickState                    &old,
+                   ConstStateView                       old,
                    const BrickPoint                    &point,
-                   BrickState                          &updated,
+                   StateView                            updated,
                    dealii::SymmetricTensor<2, 3>       &stress) const;
 
       /**
@@ -151,8 +127,8 @@ namespace masonry
        */
       virtual void
       evaluate_extrapolated(const dealii::SymmetricTensor<2, 3> &strain,
-                            const BrickState                    &old,
-                            const BrickState                    &older,
+                            ConstStateView                       old,
+                            ConstStateView                       older,
                             const double                         ratio,
                             const BrickPoint                    &point,
                             dealii::SymmetricTensor<2, 3>       &stress,
@@ -165,8 +141,8 @@ namespace masonry
        */
       virtual void
       extrapolated_stress(const dealii::SymmetricTensor<2, 3> &strain,
-                          const BrickState                    &old,
-                          const BrickState                    &older,
+                          ConstStateView                       old,
+                          ConstStateView                       older,
                           const double                         ratio,
                           const BrickPoint                    &point,
                           dealii::SymmetricTensor<2, 3>       &stress) const;
@@ -180,7 +156,7 @@ namespace masonry
        */
       virtual bool
       is_elastic(const dealii::SymmetricTensor<2, 3> &strain,
-                 const BrickState                    &old,
+                 ConstStateView                       old,
                  const BrickPoint                    &point) const;
 
       /**
@@ -192,9 +168,51 @@ namespace masonry
       virtual void
       check_point(const BrickPoint &point) const;
 
-      /** The initial elastic stiffness C0 (Pa). */
-      dealii::SymmetricTensor<4, 3>
+      /**
+       * The initial elastic stiffness C0 (Pa): the tangent of an intact
+       * point inside the initial elastic domain, used for the cached
+       * elastic cell matrices. The default is isotropic with
+       * youngs_modulus() and poissons_ratio(); an anisotropic material
+       * overrides it.
+       */
+      virtual dealii::SymmetricTensor<4, 3>
       elastic_stiffness() const;
+
+      /**
+       * The state variables of a point (names, sizes): what evaluate()
+       * reads from `old` and writes to `updated`. None by default.
+       */
+      virtual std::vector<StateVariable>
+      state_variables() const;
+
+      /** The state of a point before any loading: zeros by default. */
+      virtual void
+      initial_state(StateView state) const;
+
+      /**
+       * Names of the quantities written for each cell (averaged over its
+       * points) to the VTU/HDF5 output; by default every component of the
+       * state variables.
+       */
+      virtual std::vector<std::string>
+      reported_quantities() const;
+
+      /** The values of reported_quantities() for @p state. */
+      virtual void
+      report(ConstStateView state, dealii::ArrayView<double> values) const;
+
+      /**
+       * Names of the damage variables (0 intact to 1), reported as their
+       * largest value (curve.csv: brick_NAME, summary.json: max_brick_NAME)
+       * and whose extrapolation error controls the IMPL-EX step. None by
+       * default.
+       */
+      virtual std::vector<std::string>
+      damage_names() const;
+
+      /** The values of damage_names() for @p state. */
+      virtual void
+      damages(ConstStateView state, dealii::ArrayView<double> values) const;
     };
   } // namespace brickwork
 } // namespace masonry

@@ -6,6 +6,7 @@
 #ifndef masonry_brickwork_interface_law_h
 #define masonry_brickwork_interface_law_h
 
+#include <masonry/brickwork/state.h>
 #include <masonry/core/plugins.h>
 
 #include <array>
@@ -14,30 +15,6 @@ namespace masonry
 {
   namespace brickwork
   {
-    /**
-     * State of an interface integration point (irreversible). Stored as
-     * deal.II quadrature-point data (CellDataStorage) of the cell on the
-     * interface's side A and written to checkpoints by serialize().
-     */
-    struct InterfaceHistory
-    {
-      /**
-       * Scalar damage acting on the tractions, 0 (intact) to 1 (fully
-       * debonded); with viscosity, the regularised value.
-       */
-      double damage = 0;
-      /** Damage of the law without viscosity (the envelope reached). */
-      double damage_inviscid = 0;
-
-      /** Write or read the state (boost serialisation). */
-      template <class Archive>
-      void
-      serialize(Archive &ar, const unsigned int)
-      {
-        ar &damage &damage_inviscid;
-      }
-    };
-
     /** What a law needs to know about the point besides its opening. */
     struct InterfacePoint
     {
@@ -72,7 +49,8 @@ namespace masonry
      * Base class of interface laws. The opening (jump of the displacement
      * from the lower-coordinate brick to the other) is given in the local
      * frame: component 0 along the normal (positive opening), 1 and 2 the
-     * slips.
+     * slips. Like a brick material, a law declares its own state
+     * variables, elastic tangent and reported quantities.
      */
     class InterfaceLaw
     {
@@ -107,12 +85,12 @@ namespace masonry
        * caller only when the load step converges).
        */
       virtual void
-      evaluate(const Local3           &jump,
-               const InterfaceHistory &old,
-               const InterfacePoint   &point,
-               InterfaceHistory       &updated,
-               Local3                 &t,
-               Local33                &tangent) const = 0;
+      evaluate(const Local3         &jump,
+               ConstStateView        old,
+               const InterfacePoint &point,
+               StateView             updated,
+               Local3               &t,
+               Local33              &tangent) const = 0;
 
       /**
        * IMPL-EX: traction and tangent at @p jump with the damage
@@ -121,13 +99,13 @@ namespace masonry
        * implicit law from @p old.
        */
       virtual void
-      evaluate_extrapolated(const Local3           &jump,
-                            const InterfaceHistory &old,
-                            const InterfaceHistory &older,
-                            const double            ratio,
-                            const InterfacePoint   &point,
-                            Local3                 &t,
-                            Local33                &tangent) const;
+      evaluate_extrapolated(const Local3         &jump,
+                            ConstStateView        old,
+                            ConstStateView        older,
+                            const double          ratio,
+                            const InterfacePoint &point,
+                            Local3               &t,
+                            Local33              &tangent) const;
 
       /**
        * Whether evaluate() at @p jump from @p old would give exactly the
@@ -137,15 +115,50 @@ namespace masonry
        * interface's cached elastic matrix. The default: is_linear().
        */
       virtual bool
-      is_elastic(const Local3           &jump,
-                 const InterfaceHistory &old,
-                 const InterfacePoint   &point) const
-      {
-        (void)jump;
-        (void)old;
-        (void)point;
-        return is_linear();
-      }
+      is_elastic(const Local3         &jump,
+                 ConstStateView        old,
+                 const InterfacePoint &point) const;
+
+      /**
+       * The initial (elastic) tangent in the local frame, Pa/m: used for
+       * the cached elastic matrices of intact joints. The default:
+       * diag(k_n, k_s, k_s).
+       */
+      virtual Local33
+      elastic_tangent() const;
+
+      /** The state variables of a point (names, sizes); none by default. */
+      virtual std::vector<StateVariable>
+      state_variables() const;
+
+      /** The state before any loading: zeros by default. */
+      virtual void
+      initial_state(StateView state) const;
+
+      /**
+       * Names of the quantities written for each joint face (averaged over
+       * its points) to interfaces.pvd; by default every component of the
+       * state variables.
+       */
+      virtual std::vector<std::string>
+      reported_quantities() const;
+
+      /** The values of reported_quantities() for @p state. */
+      virtual void
+      report(ConstStateView state, dealii::ArrayView<double> values) const;
+
+      /**
+       * Names of the damage variables (0 to 1): their largest value is
+       * max_damage in curve.csv, a damaged joint has no initial tangent,
+       * and their extrapolation error controls the IMPL-EX step. None by
+       * default.
+       */
+      virtual std::vector<std::string>
+      damage_names() const;
+
+      /** The values of damage_names() for @p state. */
+      virtual void
+      damages(ConstStateView state, dealii::ArrayView<double> values) const;
 
       /** Whether the law is linear (tangent independent of the state). */
       virtual bool

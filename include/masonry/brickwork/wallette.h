@@ -2,8 +2,9 @@
  * @file
  * The mesoscale wallette model: mesh of enlarged bricks, joints found as
  * coincident face pairs, Newton solution under a displacement-controlled
- * platen. The heavy deal.II machinery lives in wallette.cc; this header only
- * carries the settings.
+ * platen. The parts of the model live in source/brickwork/model/ (private
+ * headers), the outputs in source/brickwork/postprocess/; this header only
+ * carries the settings, one struct per concern.
  */
 #ifndef masonry_brickwork_wallette_h
 #define masonry_brickwork_wallette_h
@@ -22,63 +23,20 @@ namespace masonry
     class BrickMaterial;
     class InterfaceLaw;
 
-    /** Everything the wallette model needs besides its plugins. */
-    struct WalletteSettings
+    /** The mesh of enlarged bricks (`Elements along ...', `Joints',
+     * `Mesh distortion'). */
+    struct MeshSettings
     {
       /** Sizes of the enlarged brick and of the wallette. */
       WalletteSize size;
       /** Elements along the enlarged brick's length, width and height: the
        * mesh spacing is length/n_l, width/n_w, height/n_h everywhere. */
       unsigned int n_l = 4, n_w = 2, n_h = 2;
-      /** Platens hold the wall faces laterally (true) or let them slide. */
-      bool lateral_fixed = false;
-      /** Unit direction of the top platen's motion. */
-      std::array<double, 3> direction = {{0, 0, -1}};
-      /** Final platen displacement (m, along direction). */
-      double target_displacement = 0;
-      /** Nominal number of steps (the largest step is target / n_steps). */
-      unsigned int n_steps = 50;
-      /** Consecutive halvings of a step before the run stops. */
-      unsigned int max_cutbacks = 10;
-      /** Factor on the step after an easy step (up to the nominal step). */
-      double growth = 2;
-      /** Newton: iterations and relative residual tolerance. */
-      unsigned int max_newton       = 20;
-      double       newton_tolerance = 1e-8;
-      bool         line_search      = true;
-      /** "direct", "direct klu", "cg amg" or "gmres amg". */
-      std::string linear_solver = "direct";
-      /** Relative tolerance of the iterative solvers. */
-      double linear_tolerance = 1e-10;
-      /** Gauss (true) or Lobatto (false) points on interfaces. */
-      bool gauss = false;
-      /** Write VTU every this many converged steps (0: only the last). */
-      unsigned int vtu_interval = 10;
-      /** Write VTU/PVD at all. */
-      bool write_vtu = true;
-      /** Brick fields as HDF5 + XDMF (solution.xdmf, solution_NNNN.h5)
-       * instead of VTU/PVTU + PVD. */
-      bool hdf5 = false;
-      /** Render curve.png with matplotlib. */
-      bool write_plot = true;
-      /** Print one line per converged step. */
-      bool progress = true;
-      /**
-       * Length of a virtual LVDT on the front face (y = 0) at mid-length,
-       * centred at mid-height (m); 0: no gauge.
-       */
-      double gauge_length = 0;
       /**
        * Merge the coincident vertices of neighbouring bricks (a perfectly
        * bonded continuum without interfaces, as a reference).
        */
       bool bonded = false;
-      /**
-       * Write the mesh and the final platen displacement as a CalculiX
-       * input (calculix.inp) and the computed nodal displacements
-       * (nodal_displacements.csv) in the same numbering.
-       */
-      bool write_calculix = false;
       /**
        * Amplitude of a smooth distortion of the mesh, as a fraction of the
        * mesh spacing in each direction (dimensionless, 0 to 0.2; 0: the
@@ -90,7 +48,36 @@ namespace masonry
        * compression does not change.
        */
       double distortion = 0;
+      /** Gauss (true) or Lobatto (false) points on interfaces. */
+      bool gauss = false;
+    };
 
+    /** The platens and the gauge (`Platen ...', `Gauge length'). */
+    struct PlatenSettings
+    {
+      /** Platens hold the wall faces laterally (true) or let them slide. */
+      bool lateral_fixed = false;
+      /** Unit direction of the top platen's motion. */
+      std::array<double, 3> direction = {{0, 0, -1}};
+      /**
+       * Length of a virtual LVDT on the front face (y = 0) at mid-length,
+       * centred at mid-height (m); 0: no gauge.
+       */
+      double gauge_length = 0;
+    };
+
+    /** The loading protocol and the step size (`Protocol', `Number of
+     * steps', `Cycle amplitudes', ...). */
+    struct ProtocolSettings
+    {
+      /** Final platen displacement (m, along direction). */
+      double target_displacement = 0;
+      /** Nominal number of steps (the largest step is target / n_steps). */
+      unsigned int n_steps = 50;
+      /** Consecutive halvings of a step before the run stops. */
+      unsigned int max_cutbacks = 10;
+      /** Factor on the step after an easy step (up to the nominal step). */
+      double growth = 2;
       /** Platen displacements (m, along direction) at which the cycles
        * turn back; empty: one monotonic ramp to target_displacement. */
       std::vector<double> cycle_amplitudes;
@@ -103,21 +90,33 @@ namespace masonry
       /** Platen speed (m/s): the pseudo-time of a step is its platen
        * displacement increment divided by this (viscous regularisation). */
       double platen_speed = 1e-5;
-      /** Remove cells whose maximum principal strain exceeds
-       * deletion_strain after a converged step (0: never). */
-      double deletion_strain = 0;
-      /** At most this many cells are deleted after one step. */
-      unsigned int max_deletions = 10;
-      /** Coefficient of variation of the strengths of bricks and joints
-       * (a normal factor per brick and per joint, cut at 0.2 and 1.8). */
-      double strength_scatter = 0;
-      /** Seed of the random strength factors. */
-      unsigned int seed = 1;
-      /** Write a checkpoint every this many converged steps (0: only when
-       * the run stops early). */
-      unsigned int checkpoint_interval = 0;
-      /** Continue from the checkpoint in the output directory. */
-      bool resume = false;
+      /** Stop (status `interrupted', checkpoint written) after this many
+       * converged steps of this run (0: no limit). */
+      unsigned int max_steps = 0;
+    };
+
+    /** Newton-Raphson (`Maximum Newton iterations', `Newton tolerance',
+     * `Line search'). */
+    struct NewtonSettings
+    {
+      /** Iterations and relative residual tolerance. */
+      unsigned int max_newton       = 20;
+      double       newton_tolerance = 1e-8;
+      bool         line_search      = true;
+    };
+
+    /** The linear solver (`Linear solver', `Linear solver tolerance'). */
+    struct LinearSolverSettings
+    {
+      /** "direct", "direct klu", "cg amg" or "gmres amg". */
+      std::string linear_solver = "direct";
+      /** Relative tolerance of the iterative solvers. */
+      double linear_tolerance = 1e-10;
+    };
+
+    /** Integration of the laws (`Damage integration', `IMPL-EX ...'). */
+    struct IntegratorSettings
+    {
       /** IMPL-EX integration of brick and joint damage: internal
        * variables extrapolated in each step, updated after it. */
       bool implex = false;
@@ -128,21 +127,80 @@ namespace masonry
        * of the nominal step (a softening snap keeps the damage error large
        * however small the step). */
       double implex_minimum_step = 0.01;
-      /** Stop (status `interrupted', checkpoint written) after this many
-       * converged steps of this run (0: no limit). */
-      unsigned int max_steps = 0;
+    };
+
+    /** Element deletion and strength scatter (`Deletion strain', `Maximum
+     * deletions per step', `Strength scatter', `Random seed'). */
+    struct SpecimenSettings
+    {
+      /** Remove cells whose maximum principal strain exceeds
+       * deletion_strain after a converged step (0: never). */
+      double deletion_strain = 0;
+      /** At most this many cells are deleted after one step. */
+      unsigned int max_deletions = 10;
+      /** Coefficient of variation of the strengths of bricks and joints
+       * (a normal factor per brick and per joint, cut at 0.2 and 1.8). */
+      double strength_scatter = 0;
+      /** Seed of the random strength factors. */
+      unsigned int seed = 1;
+    };
+
+    /** Output files (`Output interval', `Write VTU', `Output format',
+     * `Write plot', `Write CalculiX input'). */
+    struct OutputSettings
+    {
+      /** Write VTU every this many converged steps (0: only the last). */
+      unsigned int vtu_interval = 10;
+      /** Write VTU/PVD at all. */
+      bool write_vtu = true;
+      /** Brick fields as HDF5 + XDMF (solution.xdmf, solution_NNNN.h5)
+       * instead of VTU/PVTU + PVD. */
+      bool hdf5 = false;
+      /** Render curve.png with matplotlib. */
+      bool write_plot = true;
+      /**
+       * Write the mesh and the final platen displacement as a CalculiX
+       * input (calculix.inp) and the computed nodal displacements
+       * (nodal_displacements.csv) in the same numbering.
+       */
+      bool write_calculix = false;
+    };
+
+    /** Checkpoints (`Checkpoint interval', `Resume'). */
+    struct CheckpointSettings
+    {
+      /** Write a checkpoint every this many converged steps (0: only when
+       * the run stops early). */
+      unsigned int checkpoint_interval = 0;
+      /** Continue from the checkpoint in the output directory. */
+      bool resume = false;
+    };
+
+    /** Everything the wallette model needs besides its plugins: one
+     * struct per concern, each part of the model gets only its own. */
+    struct WalletteSettings
+    {
+      MeshSettings         mesh;
+      PlatenSettings       platen;
+      ProtocolSettings     protocol;
+      NewtonSettings       newton;
+      LinearSolverSettings linear_solver;
+      IntegratorSettings   integrator;
+      SpecimenSettings     specimen;
+      OutputSettings       output;
+      CheckpointSettings   checkpoint;
     };
 
     /** Mesh spacing in x, y, z (m). */
     std::array<double, 3>
-    mesh_spacing(const WalletteSettings &settings);
+    mesh_spacing(const MeshSettings &settings);
 
     /**
      * Check that every box is a whole number of mesh cells in each
      * direction; throws an ExcParameter naming the entry to change.
      */
     void
-    check_mesh(const std::vector<Box> &boxes, const WalletteSettings &settings);
+    check_mesh(const std::vector<Box> &boxes, const MeshSettings &settings);
 
     /** Build, solve and write the results of a wallette under a platen. */
     void

@@ -1,0 +1,154 @@
+/**
+ * @file
+ * Assembly of the internal forces and the tangent: bricks (8-point Gauss
+ * hexahedra) and joints (interface elements), with the elastic caches that
+ * skip the laws where nothing can change.
+ */
+#ifndef masonry_brickwork_model_assembler_h
+#define masonry_brickwork_model_assembler_h
+
+#include <masonry/brickwork/brick_material.h>
+#include <masonry/brickwork/interface_law.h>
+
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/full_matrix.h>
+
+#include <map>
+
+#include "integrator.h"
+#include "interface_element.h"
+#include "joints.h"
+#include "point_states.h"
+#include "specimen.h"
+#include "system.h"
+
+namespace masonry
+{
+  namespace brickwork
+  {
+    namespace model
+    {
+      /** Work counters of the assemblies (summary.json). */
+      struct AssemblyStatistics
+      {
+        /** Cells evaluated by the material / by their elastic matrix
+         * (work skipped where nothing can change). */
+        unsigned long n_material_cells = 0, n_elastic_cells = 0;
+        /** The same for the interfaces. */
+        unsigned long n_law_interfaces = 0, n_elastic_interfaces = 0;
+        /** Tangent matrices assembled. */
+        unsigned int n_matrix_assemblies = 0;
+        /** Wall time in assemblies, s. */
+        double seconds = 0;
+      };
+
+      /** The parts an assembly reads and the states it writes. */
+      struct AssemblyParts
+      {
+        System              &system;
+        const Joints        &joints;
+        const Specimen      &specimen;
+        const BrickMaterial &material;
+        const InterfaceLaw  &law;
+        const Integrator    &integrator;
+        /** Brick points: 8 per active cell (index 8 c + q). */
+        PointStates &bricks;
+        /** Joint points: 4 per face (index 4 n + q). */
+        PointStates &joint_points;
+      };
+
+      /** Assembles forces and tangents; keeps the elastic caches. */
+      class Assembler
+      {
+      public:
+        /** Interface points from @p gauss; @p spacing: the mesh spacing
+         * along x, m (scale of the diagonal of orphan DOFs). */
+        Assembler(const AssemblyParts &parts,
+                  const bool           gauss,
+                  const double         spacing);
+
+        /** The elastic matrices of the cells (one per cell shape) and the
+         * interfaces (one per normal axis and area). */
+        void
+        make_elastic_caches();
+
+        /**
+         * Internal forces at the solution into system.f_int; the tangent
+         * into system.matrix when @p need_matrix (a linear model keeps the
+         * one it assembled first). Brick and joint laws are evaluated at
+         * the pseudo-time increment @p time_step, s.
+         */
+        void
+        assemble(const bool need_matrix, const double time_step);
+
+        /**
+         * The implicit update of every point at the solution (IMPL-EX,
+         * after a step); the largest difference between the updated and the
+         * extrapolated damages of the laws.
+         */
+        double
+        update_states(const Integrator &integrator, const double time_step);
+
+        /** Cells were deleted: the kept matrices are no longer valid. */
+        void
+        invalidate();
+
+        /** Whether the last assembly gave the initial (elastic) tangent. */
+        bool
+        initial_tangent() const
+        {
+          return is_initial;
+        }
+
+        /** The interface element (jumps and local matrices). */
+        const InterfaceElement &
+        element() const
+        {
+          return interface_element;
+        }
+
+        AssemblyStatistics statistics;
+
+      private:
+        void
+        assemble_bricks(const bool   with_matrix,
+                        const bool   bricks_assembled,
+                        const double time_step);
+        /** One brick cell's force and tangent from its point responses. */
+        void
+        brick_cell(const dealii::FEValues<3> &fe_values,
+                   const std::array<dealii::SymmetricTensor<2, 3>, 8> &strain,
+                   const unsigned int                                  c,
+                   const BrickPoint                                   &point,
+                   const bool                  with_matrix,
+                   dealii::Vector<double>     &fe_local,
+                   dealii::FullMatrix<double> &ke);
+        void
+        assemble_joints(const bool with_matrix, const double time_step);
+        /** The per-cell BrickPoint of cell @p c. */
+        BrickPoint
+        brick_point(const unsigned int c, const double time_step) const;
+
+        AssemblyParts    parts;
+        InterfaceElement interface_element;
+        double           spacing;
+        bool             is_initial = false;
+        /** A linear model's matrix is assembled once (until deletions). */
+        bool matrix_valid = false;
+        /** Elastic bricks with nonlinear joints: the bricks' part of the
+         * matrix, assembled once (until deletions). */
+        dealii::TrilinosWrappers::SparseMatrix brick_matrix;
+        bool                                   brick_matrix_valid = false;
+        /** Cell matrices of the elastic bricks, by cell shape. */
+        std::map<std::vector<long>, dealii::FullMatrix<double>> cell_matrices;
+        std::vector<const dealii::FullMatrix<double> *>         matrix_of_cell;
+        /** Elastic matrices of the interfaces, by (axis, area). */
+        std::map<std::pair<unsigned int, long>, dealii::FullMatrix<double>>
+                                                        interface_matrices;
+        std::vector<const dealii::FullMatrix<double> *> matrix_of_interface;
+      };
+    } // namespace model
+  }   // namespace brickwork
+} // namespace masonry
+
+#endif

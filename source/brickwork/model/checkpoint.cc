@@ -1,0 +1,123 @@
+/**
+ * @file
+ * Checkpoint files.
+ */
+#include <masonry/core/output_directory.h>
+#include <masonry/core/parameters.h>
+
+#include "checkpoint.h"
+#include <boost/archive/binary_iarchive.hpp>
+#include <boost/archive/binary_oarchive.hpp>
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/utility.hpp>
+#include <boost/serialization/vector.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+#include "deletion.h"
+
+namespace masonry
+{
+  namespace brickwork
+  {
+    namespace model
+    {
+      using namespace dealii;
+
+      namespace
+      {
+        /** Every part in one order, for writing and reading. */
+        template <class Archive>
+        void
+        serialize_parts(Archive &ar, const CheckpointParts &parts)
+        {
+          ar &parts.progress &parts.curve &parts.statistics &parts.specimen;
+          ar &parts.bricks &parts.joint_points &parts.solver &parts
+            .step_control &parts.postprocessors;
+        }
+
+        std::string
+        file_name(RunContext &context)
+        {
+          return context.output.path() + "/checkpoint." +
+                 std::to_string(
+                   Utilities::MPI::this_mpi_process(context.mpi_communicator));
+        }
+      } // namespace
+
+      void
+      save_checkpoint(const CheckpointParts &parts,
+                      const std::string     &status,
+                      RunContext            &context)
+      {
+        const MPI_Comm    comm = context.mpi_communicator;
+        const std::string name = file_name(context);
+        {
+          std::ofstream                   out(name + ".tmp", std::ios::binary);
+          boost::archive::binary_oarchive ar(out);
+          unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+          types::global_dof_index n_dofs = parts.system.dof_handler.n_dofs();
+          ar &n_ranks            &n_dofs;
+          serialize_parts(ar, parts);
+          std::vector<std::pair<types::global_dof_index, double>> values;
+          for (const auto i : parts.system.owned)
+            values.emplace_back(i, parts.system.u[i]);
+          std::string s = status;
+          ar &values &s;
+        }
+        // replace the old checkpoint only once the new one is complete
+        std::filesystem::rename(name + ".tmp", name);
+        context.output.file(
+          "checkpoint." +
+          std::to_string(Utilities::MPI::this_mpi_process(comm)));
+      }
+
+      void
+      load_checkpoint(CheckpointParts &parts, RunContext &context)
+      {
+        const MPI_Comm    comm = context.mpi_communicator;
+        const std::string name = file_name(context);
+        std::ifstream     in(name, std::ios::binary);
+        AssertThrow(in,
+                    ExcParameter("Resume",
+                                 "no checkpoint " + name +
+                                   " (run with `Checkpoint interval' or "
+                                   "`Maximum steps' first, with the same "
+                                   "output directory and number of ranks)"));
+        try
+          {
+            boost::archive::binary_iarchive ar(in);
+            unsigned int                    n_ranks;
+            types::global_dof_index         n_dofs;
+            ar &n_ranks                    &n_dofs;
+            AssertThrow(n_ranks == Utilities::MPI::n_mpi_processes(comm) &&
+                          n_dofs == parts.system.dof_handler.n_dofs(),
+                        ExcParameter("Resume",
+                                     "the checkpoint was written by a run "
+                                     "with " +
+                                       std::to_string(n_ranks) + " ranks and " +
+                                       std::to_string(n_dofs) +
+                                       " DOFs; resume with the same "
+                                       "parameters and number of ranks"));
+            serialize_parts(ar, parts);
+            std::vector<std::pair<types::global_dof_index, double>> values;
+            std::string                                             status;
+            ar &values                                             &status;
+            for (const auto &v : values)
+              parts.system.u[v.first] = v.second;
+            parts.system.u.compress(VectorOperation::insert);
+          }
+        catch (const boost::archive::archive_exception &e)
+          {
+            AssertThrow(false,
+                        ExcParameter("Resume",
+                                     "the checkpoint " + name +
+                                       " cannot be read (" + e.what() + ")"));
+          }
+        parts.system.orphans = orphan_dofs(parts.system, parts.specimen);
+        parts.system.make_constraints();
+      }
+    } // namespace model
+  }   // namespace brickwork
+} // namespace masonry

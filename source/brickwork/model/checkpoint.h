@@ -1,0 +1,72 @@
+/**
+ * @file
+ * Checkpoints of a wallette run: one file per rank (checkpoint.RANK in the
+ * output directory) to which every part writes its own state (serialize()
+ * of the protocol position, the curve, the counters, the deletions, the
+ * point states, the solver, the step control and the postprocessors).
+ */
+#ifndef masonry_brickwork_model_checkpoint_h
+#define masonry_brickwork_model_checkpoint_h
+
+#include <masonry/core/run_context.h>
+
+#include <string>
+#include <vector>
+
+#include "curve.h"
+#include "linear_solvers.h"
+#include "point_states.h"
+#include "specimen.h"
+#include "step_control.h"
+#include "system.h"
+
+namespace masonry
+{
+  namespace brickwork
+  {
+    namespace model
+    {
+      /** Counters of the step loop. */
+      struct RunStatistics
+      {
+        unsigned int total_newton = 0, total_cutbacks = 0;
+        template <class Archive>
+        void
+        serialize(Archive &ar, const unsigned int)
+        {
+          ar &total_newton &total_cutbacks;
+        }
+      };
+
+      /** The parts that go into a checkpoint. */
+      struct CheckpointParts
+      {
+        Progress                &progress;
+        std::vector<CurvePoint> &curve;
+        RunStatistics           &statistics;
+        Specimen                &specimen;
+        PointStates             &bricks;
+        PointStates             &joint_points;
+        LinearSolver            &solver;
+        StepSizeControl         &step_control;
+        System                  &system;
+        /** What each postprocessor saves, in their order. */
+        std::vector<std::string> &postprocessors;
+      };
+
+      /** Write this rank's checkpoint (replaces the last one only once
+       * complete). */
+      void
+      save_checkpoint(const CheckpointParts &parts,
+                      const std::string     &status,
+                      RunContext            &context);
+
+      /** Read this rank's checkpoint; throws naming `Resume' if there is
+       * none or it belongs to another run. */
+      void
+      load_checkpoint(CheckpointParts &parts, RunContext &context);
+    } // namespace model
+  }   // namespace brickwork
+} // namespace masonry
+
+#endif

@@ -1,0 +1,126 @@
+/**
+ * @file
+ * How the laws are integrated in a load step: implicitly (the law's
+ * algorithmic tangent at the trial state, states updated in every Newton
+ * iteration) or by IMPL-EX (Oliver, Huespe & Cante 2008: internal variables
+ * extrapolated from the two last converged states and frozen within the
+ * step; the implicit update follows at the converged displacements). One
+ * object, chosen once from `Damage integration'; the assembler asks it how
+ * to evaluate each point.
+ */
+#ifndef masonry_brickwork_model_integrator_h
+#define masonry_brickwork_model_integrator_h
+
+#include <masonry/brickwork/brick_material.h>
+#include <masonry/brickwork/interface_law.h>
+#include <masonry/brickwork/wallette.h>
+
+#include <memory>
+
+#include "point_states.h"
+
+namespace masonry
+{
+  namespace brickwork
+  {
+    namespace model
+    {
+      class Assembler;
+
+      /** The integration of brick and joint laws within a step. */
+      class Integrator
+      {
+      public:
+        virtual ~Integrator() = default;
+
+        /** Pseudo-time ratio of this step to the last converged one (0: no
+         * extrapolation, for example across a reversal). */
+        void
+        set_ratio(const double r)
+        {
+          ratio = r;
+        }
+        double
+        get_ratio() const
+        {
+          return ratio;
+        }
+
+        /** Whether brick point @p p responds with the initial elastic
+         * stiffness at @p strain. */
+        virtual bool
+        brick_is_elastic(const BrickMaterial                 &material,
+                         const dealii::SymmetricTensor<2, 3> &strain,
+                         const PointStates                   &states,
+                         const unsigned int                   p,
+                         const BrickPoint                    &point) const = 0;
+
+        /** Stress and (if @p tangent) tangent of brick point @p p. */
+        virtual void
+        brick_response(const BrickMaterial                 &material,
+                       const dealii::SymmetricTensor<2, 3> &strain,
+                       PointStates                         &states,
+                       const unsigned int                   p,
+                       const BrickPoint                    &point,
+                       dealii::SymmetricTensor<2, 3>       &stress,
+                       dealii::SymmetricTensor<4, 3>       *tangent) const = 0;
+
+        /** Whether joint point @p p responds with the elastic tangent. */
+        virtual bool
+        joint_is_elastic(const InterfaceLaw   &law,
+                         const Local3         &jump,
+                         const PointStates    &states,
+                         const unsigned int    p,
+                         const InterfacePoint &point) const = 0;
+
+        /** A joint point found elastic: what its step state becomes. */
+        virtual void
+        keep_elastic_joint(PointStates &states, const unsigned int p) const = 0;
+
+        /** Traction and tangent of joint point @p p. */
+        virtual void
+        joint_response(const InterfaceLaw   &law,
+                       const Local3         &jump,
+                       PointStates          &states,
+                       const unsigned int    p,
+                       const InterfacePoint &point,
+                       Local3               &traction,
+                       Local33              &tangent) const = 0;
+
+        /** The state of joint point @p p that the step's tangent was built
+         * from (its damages decide whether the tangent is the initial
+         * one). */
+        virtual ConstStateView
+        step_state(const PointStates &states, const unsigned int p) const = 0;
+
+        /** Accepting a step: whether the converged state is also kept as
+         * the older one. */
+        virtual bool
+        keeps_older() const = 0;
+
+        /**
+         * After a converged step: update the states at the converged
+         * displacements (pseudo-time increment @p time_step, s) if the step
+         * did not, and return the error of the
+         * step's damages (0 when there is none to measure).
+         */
+        virtual double
+        after_step(Assembler &assembler, const double time_step) const = 0;
+
+        /** The damage a point had in the step, from its two last converged
+         * values (IMPL-EX extrapolation, within [d_old, 1]). */
+        double
+        extrapolated(const double d_old, const double d_older) const;
+
+      protected:
+        double ratio = 0;
+      };
+
+      /** The integrator `Damage integration' selects. */
+      std::unique_ptr<Integrator>
+      create_integrator(const IntegratorSettings &settings);
+    } // namespace model
+  }   // namespace brickwork
+} // namespace masonry
+
+#endif

@@ -1,0 +1,66 @@
+/**
+ * @file
+ * The joints of a wallette: pairs of coincident cell faces of two bricks.
+ */
+#ifndef masonry_brickwork_model_joints_h
+#define masonry_brickwork_model_joints_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/dofs/dof_handler.h>
+
+#include <array>
+#include <vector>
+
+namespace masonry
+{
+  namespace brickwork
+  {
+    namespace model
+    {
+      /** A joint between two bricks: a pair of coincident cell faces. */
+      struct InterfaceFace
+      {
+        /** 0 bed (normal z), 1 head (normal x), 2 collar (normal y). */
+        unsigned int type;
+        /** Axis of the normal (from side A, lower coordinate, to B). */
+        unsigned int axis;
+        /** Whether this rank assembles it (owner of side A). */
+        bool owned;
+        /** Degrees of freedom: A vertices 0-3 then B, 3 components each. */
+        std::vector<dealii::types::global_dof_index> dofs;
+        /** Vertices of side A (face-lexicographic order). */
+        std::array<dealii::Point<3>, 4> vertices;
+        /** Area, m^2. */
+        double area;
+        /** Bricks on both sides. */
+        unsigned int brick_a, brick_b;
+        /** Active cell indices on both sides. */
+        unsigned int cell_a, cell_b;
+      };
+
+      /** Names of the joint types, by InterfaceFace::type. */
+      extern const char *joint_type_name[3];
+
+      /** All joints of the wallette. */
+      struct Joints
+      {
+        std::vector<InterfaceFace> faces;
+        /** Face pairs and joints (brick pairs) of each type. */
+        std::array<unsigned int, 3> n_faces_of_type{{0, 0, 0}},
+          n_joints_of_type{{0, 0, 0}};
+      };
+
+      /**
+       * The coincident boundary faces of different cells of
+       * @p dof_handler (those on z = 0 and z = @p height are the platens'),
+       * found on a grid of half the mesh @p spacing.
+       */
+      Joints
+      find_joints(const dealii::DoFHandler<3> &dof_handler,
+                  const std::array<double, 3> &spacing,
+                  const double                 height);
+    } // namespace model
+  }   // namespace brickwork
+} // namespace masonry
+
+#endif

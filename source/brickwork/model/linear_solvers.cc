@@ -1,0 +1,296 @@
+/**
+ * @file
+ * Direct and AMG-Krylov solvers of the Newton corrections.
+ */
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_solver.h>
+
+#include "linear_solvers.h"
+
+#include <Amesos.h>
+#include <Amesos_BaseSolver.h>
+#include <Epetra_LinearProblem.h>
+#include <chrono>
+
+namespace masonry
+{
+  namespace brickwork
+  {
+    namespace model
+    {
+      using namespace dealii;
+      using Clock = std::chrono::steady_clock;
+
+      void
+      LinearSolver::solve(System               &system,
+                          System::Vector       &du,
+                          const System::Vector &rhs,
+                          const bool            initial_tangent)
+      {
+        const auto start = Clock::now();
+        ++statistics.n_solves;
+        // the factorisation (or AMG hierarchy) of the initial tangent is
+        // kept while the tangent stays the initial one: every step of a
+        // linear model, the elastic steps of a nonlinear one
+        const bool reuse = initial_tangent && kept_is_initial();
+        if (reuse)
+          ++statistics.n_factorisations_reused;
+        do_solve(system, du, rhs, initial_tangent, reuse);
+        statistics.seconds +=
+          std::chrono::duration<double>(Clock::now() - start).count();
+      }
+
+      namespace
+      {
+        /** Amesos on the matrix, whose sparsity never changes, so the
+         * symbolic analysis (ordering) is done once and every new tangent
+         * only costs a numeric factorisation. */
+        class Direct : public LinearSolver
+        {
+        public:
+          /** @p name: Amesos_Mumps or Amesos_Klu. */
+          explicit Direct(const std::string &name)
+            : name(name)
+          {}
+
+          /** Factorise the current matrix and solve. */
+          void
+          factorise_and_solve(System               &system,
+                              System::Vector       &du,
+                              const System::Vector &rhs,
+                              const bool            initial_tangent)
+          {
+            if (!direct)
+              make(system);
+            solve_with(du, rhs, true, initial_tangent);
+          }
+
+          void
+          forget() override
+          {
+            is_initial = false;
+          }
+
+        protected:
+          void
+          do_solve(System               &system,
+                   System::Vector       &du,
+                   const System::Vector &rhs,
+                   const bool            initial_tangent,
+                   const bool            reuse) override
+          {
+            const bool fresh = !direct;
+            if (fresh)
+              make(system);
+            solve_with(du, rhs, fresh || !reuse, initial_tangent);
+          }
+
+          bool
+          kept_is_initial() const override
+          {
+            return is_initial;
+          }
+
+        private:
+          void
+          make(System &system)
+          {
+            problem.SetOperator(
+              const_cast<Epetra_CrsMatrix *>(&system.matrix.trilinos_matrix()));
+            Amesos factory;
+            direct.reset(factory.Create(name.c_str(), problem));
+            AssertThrow(direct != nullptr,
+                        ExcMessage(name +
+                                   " is not available in this Trilinos"));
+            AssertThrow(direct->SymbolicFactorization() == 0,
+                        ExcMessage("the symbolic analysis of the direct "
+                                   "solver failed"));
+          }
+
+          void
+          solve_with(System::Vector       &du,
+                     const System::Vector &rhs,
+                     const bool            factorise,
+                     const bool            initial_tangent)
+          {
+            if (factorise)
+              {
+                AssertThrow(direct->NumericFactorization() == 0,
+                            ExcMessage("the direct solver could not "
+                                       "factorise the tangent (singular "
+                                       "matrix?)"));
+                is_initial = initial_tangent;
+              }
+            problem.SetLHS(&du.trilinos_vector());
+            problem.SetRHS(
+              const_cast<Epetra_MultiVector *>(&rhs.trilinos_vector()));
+            AssertThrow(direct->Solve() == 0,
+                        ExcMessage("the direct solver failed"));
+          }
+
+          std::string                        name;
+          Epetra_LinearProblem               problem;
+          std::unique_ptr<Amesos_BaseSolver> direct;
+          bool                               is_initial = false;
+        };
+
+        /**
+         * CG or GMRES with Trilinos ML AMG. Cracked and crushed regions
+         * can make the tangent so badly conditioned that the Krylov solver
+         * stalls or AztecOO reports a loss of precision. Damage does not
+         * heal, so the tangents of the rest of the run are no better: the
+         * failed solve and all later ones use MUMPS.
+         */
+        class KrylovWithFallback : public LinearSolver
+        {
+        public:
+          KrylovWithFallback(const bool                  cg,
+                             const double                tolerance,
+                             dealii::ConditionalOStream &pcout)
+            : cg(cg)
+            , tolerance(tolerance)
+            , pcout(pcout)
+            , fallback("Amesos_Mumps")
+          {}
+
+          void
+          forget() override
+          {
+            is_initial = false;
+            fallback.forget();
+          }
+
+        protected:
+          void
+          do_solve(System               &system,
+                   System::Vector       &du,
+                   const System::Vector &rhs,
+                   const bool            initial_tangent,
+                   const bool            reuse) override
+          {
+            if (abandoned)
+              {
+                fallback.solve_as_fallback(
+                  system, du, rhs, initial_tangent, reuse);
+                return;
+              }
+            if (!reuse)
+              amg.reset();
+            if (!amg)
+              make_amg(system, initial_tangent);
+            // AMG-preconditioned Krylov needs tens of iterations on an
+            // intact or moderately damaged tangent; a solve that needs
+            // more than this is stalling
+            SolverControl control(1000, tolerance * rhs.l2_norm());
+            try
+              {
+                if (cg)
+                  {
+                    TrilinosWrappers::SolverCG solver(control);
+                    solver.solve(system.matrix, du, rhs, *amg);
+                  }
+                else
+                  {
+                    TrilinosWrappers::SolverGMRES solver(control);
+                    solver.solve(system.matrix, du, rhs, *amg);
+                  }
+              }
+            catch (const std::exception &)
+              {
+                ++statistics.n_direct_fallbacks;
+                abandoned = true;
+                amg.reset();
+                pcout << "  note: the Krylov solver failed on the damaged "
+                         "tangent; MUMPS solves from here on\n";
+                du = 0;
+                fallback.factorise_and_solve(system, du, rhs, initial_tangent);
+              }
+          }
+
+          bool
+          kept_is_initial() const override
+          {
+            return abandoned ? fallback.initial() : is_initial;
+          }
+
+          bool
+          fallen_back() const override
+          {
+            return abandoned;
+          }
+
+          void
+          set_fallen_back() override
+          {
+            abandoned = true;
+          }
+
+        private:
+          /** The direct solver a failed Krylov solver hands over to. */
+          class Fallback : public Direct
+          {
+          public:
+            using Direct::Direct;
+            void
+            solve_as_fallback(System               &system,
+                              System::Vector       &du,
+                              const System::Vector &rhs,
+                              const bool            initial_tangent,
+                              const bool            reuse)
+            {
+              do_solve(system, du, rhs, initial_tangent, reuse);
+            }
+            bool
+            initial() const
+            {
+              return kept_is_initial();
+            }
+          };
+
+          void
+          make_amg(System &system, const bool initial_tangent)
+          {
+            amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+            TrilinosWrappers::PreconditionAMG::AdditionalData data;
+            std::vector<std::vector<bool>>                    modes;
+            DoFTools::extract_constant_modes(system.dof_handler,
+                                             ComponentMask(3, true),
+                                             modes);
+            data.constant_modes        = modes;
+            data.elliptic              = true;
+            data.higher_order_elements = false;
+            data.smoother_sweeps       = 2;
+            data.aggregation_threshold = 0.02;
+            amg->initialize(system.matrix, data);
+            is_initial = initial_tangent;
+          }
+
+          bool                                               cg;
+          double                                             tolerance;
+          dealii::ConditionalOStream                        &pcout;
+          Fallback                                           fallback;
+          std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
+          bool abandoned = false, is_initial = false;
+        };
+      } // namespace
+
+      std::unique_ptr<LinearSolver>
+      create_linear_solver(const LinearSolverSettings &settings,
+                           dealii::ConditionalOStream &pcout)
+      {
+        const std::string &s = settings.linear_solver;
+        if (s == "direct")
+          return std::make_unique<Direct>("Amesos_Mumps");
+        if (s == "direct klu")
+          return std::make_unique<Direct>("Amesos_Klu");
+        AssertThrow(s == "cg amg" || s == "gmres amg",
+                    ExcMessage("unknown linear solver " + s));
+        return std::make_unique<KrylovWithFallback>(s == "cg amg",
+                                                    settings.linear_tolerance,
+                                                    pcout);
+      }
+    } // namespace model
+  }   // namespace brickwork
+} // namespace masonry

@@ -1,0 +1,104 @@
+/**
+ * @file
+ * The linear solvers of the Newton corrections, one object chosen once from
+ * `Linear solver': a direct solver (MUMPS or KLU through Amesos, symbolic
+ * analysis once per run) or an AMG-preconditioned Krylov solver (CG or
+ * GMRES) that falls back to MUMPS for the rest of the run when it fails.
+ */
+#ifndef masonry_brickwork_model_linear_solvers_h
+#define masonry_brickwork_model_linear_solvers_h
+
+#include <masonry/brickwork/wallette.h>
+
+#include <deal.II/base/conditional_ostream.h>
+
+#include <memory>
+
+#include "system.h"
+
+namespace masonry
+{
+  namespace brickwork
+  {
+    namespace model
+    {
+      /** Counters of the solves (summary.json). */
+      struct SolverStatistics
+      {
+        unsigned int n_solves = 0, n_factorisations_reused = 0;
+        /** Krylov solves that did not converge and were done by MUMPS. */
+        unsigned int n_direct_fallbacks = 0;
+        /** Wall time in solves, s. */
+        double seconds = 0;
+      };
+
+      /** Solves system.matrix du = rhs. */
+      class LinearSolver
+      {
+      public:
+        virtual ~LinearSolver() = default;
+
+        /**
+         * Solve with the current matrix of @p system. @p initial_tangent:
+         * the matrix is the initial (elastic) tangent, so a factorisation
+         * or preconditioner made for an earlier initial tangent is kept.
+         */
+        void
+        solve(System               &system,
+              System::Vector       &du,
+              const System::Vector &rhs,
+              const bool            initial_tangent);
+
+        /** The matrix changed its structure of values for good (cells were
+         * deleted): a kept factorisation or preconditioner of the initial
+         * tangent is no longer that of the new initial tangent. */
+        virtual void
+        forget() = 0;
+
+        /** Write or read what changes the later solves (a fallback that
+         * happened) and the counters. */
+        template <class Archive>
+        void
+        serialize(Archive &ar, const unsigned int)
+        {
+          bool fell_back = fallen_back();
+          ar &statistics.n_solves &statistics.n_direct_fallbacks &fell_back;
+          if (Archive::is_loading::value && fell_back)
+            set_fallen_back();
+        }
+
+        SolverStatistics statistics;
+
+      protected:
+        /** The solve itself; @p reuse: the kept factorisation or
+         * preconditioner is valid for this matrix. */
+        virtual void
+        do_solve(System               &system,
+                 System::Vector       &du,
+                 const System::Vector &rhs,
+                 const bool            initial_tangent,
+                 const bool            reuse) = 0;
+        /** Whether the kept factorisation or preconditioner is that of an
+         * initial tangent. */
+        virtual bool
+        kept_is_initial() const = 0;
+        /** Whether a Krylov solver has given up (default: never). */
+        virtual bool
+        fallen_back() const
+        {
+          return false;
+        }
+        virtual void
+        set_fallen_back()
+        {}
+      };
+
+      /** The solver of @p settings; notes go to @p pcout. */
+      std::unique_ptr<LinearSolver>
+      create_linear_solver(const LinearSolverSettings &settings,
+                           dealii::ConditionalOStream &pcout);
+    } // namespace model
+  }   // namespace brickwork
+} // namespace masonry
+
+#endif

@@ -1,0 +1,171 @@
+/**
+ * @file
+ * Mesh of the enlarged bricks.
+ */
+#include <masonry/core/parameters.h>
+
+#include <deal.II/grid/grid_tools.h>
+
+#include "mesh.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace masonry
+{
+  namespace brickwork
+  {
+    using namespace dealii;
+
+    std::array<double, 3>
+    mesh_spacing(const MeshSettings &s)
+    {
+      return {
+        {s.size.length / s.n_l, s.size.width / s.n_w, s.size.height / s.n_h}};
+    }
+
+    void
+    check_mesh(const std::vector<Box> &boxes, const MeshSettings &s)
+    {
+      static const char *element_entry[3] = {"Elements along the length",
+                                             "Elements along the width",
+                                             "Elements along the height"};
+      const auto         h                = mesh_spacing(s);
+      for (const auto &b : boxes)
+        for (unsigned int d = 0; d < 3; ++d)
+          if (model::divisions(b, d, h[d]) == 0)
+            {
+              std::ostringstream m;
+              m << "a " << b.kind << " of the bond is "
+                << b.upper[d] - b.lower[d] << " m long in direction "
+                << "xyz"[d] << ", not a whole number of elements of " << h[d]
+                << " m (the half bats of the stretcher bond need an even "
+                   "number of elements along the length, the headers and "
+                   "closers of the english bond a multiple of 4)";
+              AssertThrow(false, ExcParameter(element_entry[d], m.str()));
+            }
+    }
+
+    namespace model
+    {
+      unsigned int
+      divisions(const Box &box, const unsigned int d, const double h)
+      {
+        const double extent = box.upper[d] - box.lower[d];
+        const double n      = std::round(extent / h);
+        if (n < 1 || std::abs(n * h - extent) > 1e-9 * extent)
+          return 0;
+        return static_cast<unsigned int>(n);
+      }
+
+      namespace
+      {
+        /**
+         * The distortion of a vertex at @p p (position @p xi in its brick):
+         * waves of a few cells' length (so that the cells are not
+         * parallelepipeds), times a factor that vanishes on the faces of
+         * the brick (interfaces) or of the wallette (bonded).
+         */
+        Point<3>
+        distort(const Point<3> &p,
+                const double (&xi)[3],
+                const MeshSettings          &settings,
+                const std::array<double, 3> &h,
+                const double (&extent)[3])
+        {
+          const double pi = numbers::PI, delta = settings.distortion;
+          if (delta == 0)
+            return p;
+          const double w[3] = {
+            std::cos(1.7 * pi * p[2] / h[2] + 0.9 * pi * p[1] / h[1]),
+            std::cos(1.3 * pi * p[0] / h[0] + 0.7 * pi * p[2] / h[2]),
+            std::cos(1.1 * pi * p[0] / h[0] + 1.9 * pi * p[1] / h[1])};
+          // sin(pi t), exactly 0 on the faces
+          auto bump = [&](const double t) {
+            return t <= 1e-12 || t >= 1 - 1e-12 ? 0. : std::sin(pi * t);
+          };
+          Point<3> q = p;
+          for (unsigned int d = 0; d < 3; ++d)
+            {
+              const double factor = settings.bonded ?
+                                      bump(p[d] / extent[d]) :
+                                      bump(xi[0]) * bump(xi[1]) * bump(xi[2]);
+              q[d] += delta * h[d] * factor * w[d];
+            }
+          return q;
+        }
+      } // namespace
+
+      Geometry
+      make_mesh(const std::vector<Box> &boxes,
+                const MeshSettings     &settings,
+                Triangulation<3>       &triangulation)
+      {
+        const auto               h = mesh_spacing(settings);
+        std::vector<Point<3>>    vertices;
+        std::vector<CellData<3>> cells;
+        Geometry                 g;
+        for (const Box &box : boxes)
+          {
+            g.height    = std::max(g.height, box.upper[2]);
+            g.length    = std::max(g.length, box.upper[0]);
+            g.thickness = std::max(g.thickness, box.upper[1]);
+          }
+        const double extent[3] = {g.length, g.thickness, g.height};
+        for (unsigned int b = 0; b < boxes.size(); ++b)
+          {
+            const Box   &box = boxes[b];
+            unsigned int n[3];
+            for (unsigned int d = 0; d < 3; ++d)
+              {
+                n[d] = divisions(box, d, h[d]);
+                Assert(n[d] > 0, ExcInternalError());
+              }
+            const unsigned int first = vertices.size();
+            for (unsigned int k = 0; k <= n[2]; ++k)
+              for (unsigned int j = 0; j <= n[1]; ++j)
+                for (unsigned int i = 0; i <= n[0]; ++i)
+                  {
+                    const double xi[3] = {double(i) / n[0],
+                                          double(j) / n[1],
+                                          double(k) / n[2]};
+                    vertices.push_back(distort(
+                      Point<3>(
+                        box.lower[0] + (box.upper[0] - box.lower[0]) * xi[0],
+                        box.lower[1] + (box.upper[1] - box.lower[1]) * xi[1],
+                        box.lower[2] + (box.upper[2] - box.lower[2]) * xi[2]),
+                      xi,
+                      settings,
+                      h,
+                      extent));
+                  }
+            auto index = [&](unsigned int i, unsigned int j, unsigned int k) {
+              return first + i + (n[0] + 1) * (j + (n[1] + 1) * k);
+            };
+            for (unsigned int k = 0; k < n[2]; ++k)
+              for (unsigned int j = 0; j < n[1]; ++j)
+                for (unsigned int i = 0; i < n[0]; ++i)
+                  {
+                    CellData<3> c;
+                    for (unsigned int v = 0; v < 8; ++v)
+                      c.vertices[v] =
+                        index(i + v % 2, j + (v / 2) % 2, k + v / 4);
+                    c.material_id = b;
+                    cells.push_back(c);
+                  }
+          }
+        g.n_bricks   = boxes.size();
+        g.gross_area = g.length * g.thickness;
+        if (settings.bonded)
+          {
+            SubCellData               sub;
+            std::vector<unsigned int> considered;
+            GridTools::delete_duplicated_vertices(
+              vertices, cells, sub, considered, 1e-9 * g.height);
+          }
+        triangulation.create_triangulation(vertices, cells, SubCellData());
+        return g;
+      }
+    } // namespace model
+  }   // namespace brickwork
+} // namespace masonry

@@ -1,0 +1,44 @@
+/**
+ * @file
+ * Mesh of the enlarged bricks: one block of hexahedra per brick (the bricks'
+ * meshes match across the joints), optionally distorted or merged into one
+ * continuum.
+ */
+#ifndef masonry_brickwork_model_mesh_h
+#define masonry_brickwork_model_mesh_h
+
+#include <masonry/brickwork/wallette.h>
+
+#include <deal.II/grid/tria.h>
+
+namespace masonry
+{
+  namespace brickwork
+  {
+    namespace model
+    {
+      /** The overall dimensions of the wallette, m and m^2. */
+      struct Geometry
+      {
+        double       height = 0, length = 0, thickness = 0, gross_area = 0;
+        unsigned int n_bricks = 0;
+      };
+
+      /** Cells of @p box along direction @p d of spacing @p h; 0 if not a
+       * whole number. */
+      unsigned int
+      divisions(const Box &box, const unsigned int d, const double h);
+
+      /**
+       * Fill @p triangulation with the bricks @p boxes (material id = brick
+       * index) meshed as @p settings say; returns the dimensions.
+       */
+      Geometry
+      make_mesh(const std::vector<Box>   &boxes,
+                const MeshSettings       &settings,
+                dealii::Triangulation<3> &triangulation);
+    } // namespace model
+  }   // namespace brickwork
+} // namespace masonry
+
+#endif

@@ -1,0 +1,131 @@
+/**
+ * @file
+ * Newton-Raphson with line search.
+ */
+#include "newton.h"
+
+#include <cmath>
+
+namespace masonry
+{
+  namespace brickwork
+  {
+    namespace model
+    {
+      Newton::Newton(const NewtonSettings &settings, const double minimum_force)
+        : settings(settings)
+        , minimum_force(minimum_force)
+      {}
+
+      bool
+      Newton::converged(const double norm, const double all) const
+      {
+        // the residual (constrained entries zeroed) against the platen
+        // reactions, or against the elastic force of the whole applied
+        // displacement when nothing is loaded
+        const double scale =
+          std::max(std::sqrt(std::max(all * all - norm * norm, 0.)),
+                   minimum_force);
+        return norm <= settings.newton_tolerance * scale;
+      }
+
+      bool
+      Newton::solve_step(System       &system,
+                         Assembler    &assembler,
+                         LinearSolver &solver,
+                         const double  displacement,
+                         const double  time_step,
+                         unsigned int &iterations) const
+      {
+        system.set_platen(system.u, displacement);
+        System::Vector r(system.owned, system.comm),
+          du(system.owned, system.comm), u_start(system.owned, system.comm);
+        try
+          {
+            for (iterations = 0; iterations <= settings.max_newton;
+                 ++iterations)
+              {
+                assembler.assemble(true, time_step);
+                r = system.f_int;
+                r *= -1;
+                system.zero_constraints.set_zero(r);
+                const double norm = r.l2_norm();
+                const double all  = system.f_int.l2_norm();
+                if (!std::isfinite(norm) || !std::isfinite(all))
+                  return false;
+                if (converged(norm, all))
+                  return true;
+                if (iterations == settings.max_newton)
+                  return false;
+                du = 0;
+                try
+                  {
+                    solver.solve(system, du, r, assembler.initial_tangent());
+                  }
+                catch (const std::exception &)
+                  {
+                    return false;
+                  }
+                system.zero_constraints.set_zero(du);
+                u_start = system.u;
+                system.u.add(1., du);
+                if (settings.line_search &&
+                    line_search(
+                      system, assembler, u_start, du, norm, time_step))
+                  {
+                    ++iterations;
+                    return true;
+                  }
+              }
+          }
+        catch (const std::exception &)
+          {
+            return false;
+          }
+        return false;
+      }
+
+      bool
+      Newton::line_search(System               &system,
+                          Assembler            &assembler,
+                          const System::Vector &u_start,
+                          const System::Vector &du,
+                          const double          norm0,
+                          const double          time_step) const
+      {
+        // backtracking on the residual norm
+        System::Vector r(system.owned, system.comm);
+        double         alpha = 1, best_alpha = 1, best = 0;
+        for (unsigned int k = 0; k < 6; ++k)
+          {
+            assembler.assemble(false, time_step);
+            r = system.f_int;
+            system.zero_constraints.set_zero(r);
+            const double n = r.l2_norm();
+            // converged at this point already: the states were just
+            // updated at it, so the tangent assembly of the next iteration
+            // would only repeat this residual
+            if (std::isfinite(n) && n < (1 - 1e-4 * alpha) * norm0 &&
+                converged(n, system.f_int.l2_norm()))
+              return true;
+            if (k == 0 || (std::isfinite(n) && n < best))
+              {
+                best       = n;
+                best_alpha = alpha;
+              }
+            if (std::isfinite(n) && n < (1 - 1e-4 * alpha) * norm0)
+              break;
+            alpha /= 2;
+            system.u = u_start;
+            system.u.add(alpha, du);
+          }
+        if (alpha != best_alpha)
+          {
+            system.u = u_start;
+            system.u.add(best_alpha, du);
+          }
+        return false;
+      }
+    } // namespace model
+  }   // namespace brickwork
+} // namespace masonry

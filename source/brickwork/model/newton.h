@@ -1,0 +1,68 @@
+/**
+ * @file
+ * Newton-Raphson for one load step, with a backtracking line search.
+ */
+#ifndef masonry_brickwork_model_newton_h
+#define masonry_brickwork_model_newton_h
+
+#include <masonry/brickwork/wallette.h>
+
+#include "assembler.h"
+#include "linear_solvers.h"
+#include "system.h"
+
+namespace masonry
+{
+  namespace brickwork
+  {
+    namespace model
+    {
+      /** Solves the equilibrium of a step by Newton-Raphson. */
+      class Newton
+      {
+      public:
+        /**
+         * @p minimum_force: the force the residual is measured against
+         * when nothing is loaded (N), a fraction of the elastic force of
+         * the whole applied displacement.
+         */
+        Newton(const NewtonSettings &settings, const double minimum_force);
+
+        /**
+         * Move the platen to @p displacement (m) and iterate from the
+         * current solution; whether the step converged, and the number of
+         * @p iterations. A material or solver failure counts as no
+         * convergence (the caller cuts the step back).
+         */
+        bool
+        solve_step(System       &system,
+                   Assembler    &assembler,
+                   LinearSolver &solver,
+                   const double  displacement,
+                   const double  time_step,
+                   unsigned int &iterations) const;
+
+      private:
+        /** Whether the residual @p norm is small against the reactions
+         * (@p all: the norm of the internal forces with them). */
+        bool
+        converged(const double norm, const double all) const;
+
+        /** The line search after the correction @p du from @p u_start;
+         * true when it lands on a converged state. */
+        bool
+        line_search(System               &system,
+                    Assembler            &assembler,
+                    const System::Vector &u_start,
+                    const System::Vector &du,
+                    const double          norm0,
+                    const double          time_step) const;
+
+        NewtonSettings settings;
+        double         minimum_force;
+      };
+    } // namespace model
+  }   // namespace brickwork
+} // namespace masonry
+
+#endif

@@ -1,0 +1,100 @@
+/**
+ * @file
+ * The states of the integration points of one law, in flat arrays: the
+ * converged state (old), the one being computed (updated) and the one a step
+ * further back (older, for IMPL-EX). The layout of a point's state is what
+ * its law declares (state_variables()); nothing here knows a variable.
+ */
+#ifndef masonry_brickwork_model_point_states_h
+#define masonry_brickwork_model_point_states_h
+
+#include <masonry/brickwork/state.h>
+
+#include <vector>
+
+namespace masonry
+{
+  namespace brickwork
+  {
+    namespace model
+    {
+      /** Old, updated and older states of a set of points. */
+      class PointStates
+      {
+      public:
+        /**
+         * @p n_points points of @p n_values doubles each, all starting from
+         * @p initial (n_values doubles); @p checkpointed: the points this
+         * rank writes to (and reads from) checkpoints.
+         */
+        void
+        initialize(const unsigned int               n_points,
+                   const std::vector<double>       &initial,
+                   const std::vector<unsigned int> &checkpointed);
+
+        /** Doubles per point. */
+        unsigned int
+        n_values() const
+        {
+          return n;
+        }
+
+        ConstStateView
+        old(const unsigned int p) const
+        {
+          return {old_values.data() + p * n, n};
+        }
+        ConstStateView
+        older(const unsigned int p) const
+        {
+          return {older_values.data() + p * n, n};
+        }
+        ConstStateView
+        updated(const unsigned int p) const
+        {
+          return {new_values.data() + p * n, n};
+        }
+        StateView
+        updated(const unsigned int p)
+        {
+          return {new_values.data() + p * n, n};
+        }
+
+        /** The point's updated state is its converged one (no change). */
+        void
+        keep(const unsigned int p);
+
+        /** The updated state of point @p p becomes the converged one; with
+         * @p keep_older the converged one becomes the older one first. */
+        void
+        accept(const unsigned int p, const bool keep_older);
+
+        /** Write or read the old and older states of the checkpointed
+         * points (on reading, updated = old). */
+        template <class Archive>
+        void
+        serialize(Archive &ar, const unsigned int)
+        {
+          std::vector<double> data;
+          if (Archive::is_saving::value)
+            data = gather();
+          ar &data;
+          if (Archive::is_loading::value)
+            scatter(data);
+        }
+
+      private:
+        std::vector<double>
+        gather() const;
+        void
+        scatter(const std::vector<double> &data);
+
+        unsigned int              n = 0;
+        std::vector<double>       old_values, new_values, older_values;
+        std::vector<unsigned int> checkpointed;
+      };
+    } // namespace model
+  }   // namespace brickwork
+} // namespace masonry
+
+#endif

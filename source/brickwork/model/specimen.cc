@@ -1,0 +1,60 @@
+/**
+ * @file
+ * Strength scatter and characteristic lengths.
+ */
+#include "specimen.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <random>
+
+namespace masonry
+{
+  namespace brickwork
+  {
+    namespace model
+    {
+      Specimen
+      make_specimen(const dealii::Triangulation<3> &triangulation,
+                    const unsigned int              n_bricks,
+                    const Joints                   &joints,
+                    const SpecimenSettings         &settings)
+      {
+        const auto        &faces   = joints.faces;
+        const unsigned int n_cells = triangulation.n_active_cells();
+        Specimen           s;
+        s.cell_length.assign(n_cells, 0);
+        s.cell_factor.assign(n_cells, 1);
+        s.deleted.assign(n_cells, 0);
+        s.face_factor.assign(faces.size(), 1);
+        s.face_deleted.assign(faces.size(), 0);
+        std::mt19937                     random(settings.seed);
+        std::normal_distribution<double> normal(0., 1.);
+        const double                     cov  = settings.strength_scatter;
+        auto                             draw = [&]() {
+          const double x = normal(random);
+          return std::clamp(1 + cov * x, 0.2, 1.8);
+        };
+        std::vector<double> brick_factor(n_bricks, 1);
+        for (auto &f : brick_factor)
+          f = cov > 0 ? draw() : 1.;
+        std::map<std::pair<unsigned int, unsigned int>, double> joint_factor;
+        for (const auto &face : faces)
+          joint_factor[{face.brick_a, face.brick_b}] = 1;
+        for (auto &j : joint_factor)
+          j.second = cov > 0 ? draw() : 1.;
+        for (unsigned int i = 0; i < faces.size(); ++i)
+          s.face_factor[i] = joint_factor[{faces[i].brick_a, faces[i].brick_b}];
+        for (const auto &cell : triangulation.active_cell_iterators())
+          {
+            s.cell_length[cell->active_cell_index()] =
+              std::cbrt(cell->measure());
+            s.cell_factor[cell->active_cell_index()] =
+              brick_factor[cell->material_id()];
+          }
+        return s;
+      }
+    } // namespace model
+  }   // namespace brickwork
+} // namespace masonry

@@ -1,0 +1,59 @@
+/**
+ * @file
+ * What makes one specimen of a series: the random strength factors of its
+ * bricks and joints, the characteristic length of each cell, and the cells
+ * and joints deleted so far.
+ */
+#ifndef masonry_brickwork_model_specimen_h
+#define masonry_brickwork_model_specimen_h
+
+#include <masonry/brickwork/wallette.h>
+
+#include <deal.II/grid/tria.h>
+
+#include "joints.h"
+
+namespace masonry
+{
+  namespace brickwork
+  {
+    namespace model
+    {
+      /** Per cell and per joint face data of a specimen. */
+      struct Specimen
+      {
+        /** Per active cell: cube root of the volume (m), strength factor,
+         * deleted. */
+        std::vector<double> cell_length, cell_factor;
+        std::vector<char>   deleted;
+        /** Per joint face: strength factor, deleted. */
+        std::vector<double> face_factor;
+        std::vector<char>   face_deleted;
+        /** Cells deleted so far. */
+        unsigned int n_deleted = 0;
+
+        /** Write or read the deletions (the factors follow from the
+         * settings). */
+        template <class Archive>
+        void
+        serialize(Archive &ar, const unsigned int)
+        {
+          ar &n_deleted &deleted &face_deleted;
+        }
+      };
+
+      /**
+       * The specimen of @p settings: a factor 1 + CoV N(0, 1), cut to
+       * [0.2, 1.8], per brick (in brick order) and then per joint (brick
+       * pair, in pair order), drawn from the seed; nothing deleted.
+       */
+      Specimen
+      make_specimen(const dealii::Triangulation<3> &triangulation,
+                    const unsigned int              n_bricks,
+                    const Joints                   &joints,
+                    const SpecimenSettings         &settings);
+    } // namespace model
+  }   // namespace brickwork
+} // namespace masonry
+
+#endif

@@ -1,0 +1,276 @@
+/**
+ * @file
+ * Protocols and step-size control.
+ */
+#include "step_control.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace masonry
+{
+  namespace brickwork
+  {
+    namespace model
+    {
+      namespace
+      {
+        /** One ramp to the target displacement. */
+        class Monotonic : public Protocol
+        {
+        public:
+          explicit Monotonic(const double target)
+            : target(target)
+          {}
+          std::vector<Segment>
+          legs() const override
+          {
+            return {{target, false, 1}};
+          }
+          double
+          amplitude(const unsigned int) const override
+          {
+            return target;
+          }
+
+        private:
+          double target;
+        };
+
+        /** Load-unload cycles, `repeats' at each amplitude. */
+        class Cyclic : public Protocol
+        {
+        public:
+          Cyclic(const std::vector<double> &amplitudes,
+                 const unsigned int         repeats)
+            : amplitudes(amplitudes)
+            , repeats(repeats)
+          {}
+          std::vector<Segment>
+          legs() const override
+          {
+            std::vector<Segment> legs;
+            unsigned int         cycle = 0;
+            for (const double a : amplitudes)
+              for (unsigned int r = 0; r < repeats; ++r)
+                {
+                  ++cycle;
+                  legs.push_back({a, false, cycle});
+                  legs.push_back({0., true, cycle});
+                }
+            return legs;
+          }
+          double
+          amplitude(const unsigned int cycle) const override
+          {
+            return amplitudes[(cycle - 1) / repeats];
+          }
+
+        private:
+          std::vector<double> amplitudes;
+          unsigned int        repeats;
+        };
+      } // namespace
+
+      std::unique_ptr<Protocol>
+      create_protocol(const ProtocolSettings &s)
+      {
+        if (s.cycle_amplitudes.empty())
+          return std::make_unique<Monotonic>(s.target_displacement);
+        return std::make_unique<Cyclic>(s.cycle_amplitudes,
+                                        s.cycles_per_amplitude);
+      }
+
+      bool
+      next_position(const Segment                 &leg,
+                    const std::vector<CurvePoint> &curve,
+                    const ProtocolSettings        &settings,
+                    const double                   nominal,
+                    Progress                      &progress,
+                    double                        &next)
+      {
+        const double applied = progress.applied, increment = progress.increment;
+        if (!leg.unloading)
+          {
+            if (applied >= leg.target * (1 - 1e-12))
+              {
+                ++progress.segment;
+                return false;
+              }
+            next = applied + increment;
+            if (next > leg.target * (1 - 1e-9))
+              next = leg.target;
+            return true;
+          }
+        const CurvePoint &last = curve.back();
+        // (the aimed last step may land a round-off above)
+        if (last.stress <=
+              settings.unloading_stress + 1e-6 * std::abs(curve[1].stress) ||
+            applied <= leg.target + 1e-9 * nominal)
+          {
+            ++progress.segment;
+            progress.increment = nominal;
+            return false;
+          }
+        next = applied - increment;
+        // aim at the unloading stress with the slope of the last unloading
+        // step (elastic unloading is linear)
+        const CurvePoint &before = curve[curve.size() - 2];
+        if (last.unloading && last.displacement < before.displacement)
+          {
+            const double slope = (before.stress - last.stress) /
+                                 (before.displacement - last.displacement);
+            if (slope > 0)
+              {
+                const double aim =
+                  applied - (last.stress - settings.unloading_stress) / slope;
+                if (aim > next - 1e-12 * nominal)
+                  next = aim;
+              }
+          }
+        next = std::max(next, leg.target);
+        if (applied - next < 1e-9 * nominal)
+          {
+            ++progress.segment;
+            progress.increment = nominal;
+            return false;
+          }
+        return true;
+      }
+
+      bool
+      StepSizeControl::redo(const double, const double, Progress &)
+      {
+        return false;
+      }
+
+      void
+      StepSizeControl::write_summary(Json &) const
+      {}
+
+      namespace
+      {
+        /** Implicit integration: grow after two consecutive easy steps. */
+        class NewtonIterationControl : public StepSizeControl
+        {
+        public:
+          NewtonIterationControl(const double       growth,
+                                 const unsigned int max_newton,
+                                 const double       nominal)
+            : growth(growth)
+            , max_newton(max_newton)
+            , nominal(nominal)
+          {}
+
+          void
+          after_step(const unsigned int its,
+                     const double,
+                     Progress &progress) override
+          {
+            progress.easy_steps =
+              its <= std::max(2u, max_newton / 3) ? progress.easy_steps + 1 : 0;
+            if (progress.easy_steps >= 2)
+              {
+                progress.increment =
+                  std::min(progress.increment * growth, nominal);
+                progress.easy_steps = 0;
+              }
+          }
+
+        private:
+          double       growth;
+          unsigned int max_newton;
+          double       nominal;
+        };
+
+        /**
+         * IMPL-EX: the step follows the damage error. A step over the
+         * tolerance is redone smaller, down to the floor: otherwise the
+         * first step that re-enters the envelope (elastic, nothing to
+         * extrapolate from) overshoots the cycle peak by up to E0 x the
+         * step.
+         */
+        class DamageErrorControl : public StepSizeControl
+        {
+        public:
+          DamageErrorControl(const IntegratorSettings &s,
+                             const double              growth,
+                             const double              nominal)
+            : tolerance(s.implex_tolerance)
+            , floor(s.implex_minimum_step * nominal)
+            , growth(growth)
+            , nominal(nominal)
+          {}
+
+          bool
+          redo(const double taken,
+               const double error,
+               Progress    &progress) override
+          {
+            if (error > tolerance && taken > floor * (1 + 1e-12))
+              {
+                ++n_redone;
+                progress.increment = std::max(shrunk(taken, error), floor);
+                return true;
+              }
+            max_error = std::max(max_error, error);
+            return false;
+          }
+
+          void
+          after_step(const unsigned int,
+                     const double error,
+                     Progress    &progress) override
+          {
+            double &increment = progress.increment;
+            if (error > tolerance)
+              {
+                // accepted only at (or below) the floor: shrink, but not
+                // below the floor (and never raise a step that a cut-back
+                // made smaller still)
+                ++n_over_tolerance;
+                increment = std::max(shrunk(increment, error),
+                                     std::min(increment, floor));
+              }
+            else if (error < 0.5 * tolerance)
+              increment = std::min(increment * growth, nominal);
+          }
+
+          void
+          write_summary(Json &summary) const override
+          {
+            summary["implex_max_damage_error"]     = max_error;
+            summary["implex_steps_over_tolerance"] = n_over_tolerance;
+            summary["implex_steps_redone"]         = n_redone;
+          }
+
+        private:
+          /** A step shrunk in proportion to the damage error (to no less
+           * than a fifth). */
+          double
+          shrunk(const double step, const double error) const
+          {
+            return step * std::max(0.2, 0.9 * tolerance / error);
+          }
+
+          double tolerance, floor, growth, nominal;
+        };
+      } // namespace
+
+      std::unique_ptr<StepSizeControl>
+      create_step_size_control(const IntegratorSettings &integrator,
+                               const ProtocolSettings   &protocol,
+                               const NewtonSettings     &newton,
+                               const double              nominal)
+      {
+        if (integrator.implex)
+          return std::make_unique<DamageErrorControl>(integrator,
+                                                      protocol.growth,
+                                                      nominal);
+        return std::make_unique<NewtonIterationControl>(protocol.growth,
+                                                        newton.max_newton,
+                                                        nominal);
+      }
+    } // namespace model
+  }   // namespace brickwork
+} // namespace masonry

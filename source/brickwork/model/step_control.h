@@ -1,0 +1,126 @@
+/**
+ * @file
+ * The loading protocol (monotonic ramp or load-unload cycles) and the
+ * control of the step size (cut-backs, growth after easy steps or from the
+ * IMPL-EX damage error), each an object chosen once.
+ */
+#ifndef masonry_brickwork_model_step_control_h
+#define masonry_brickwork_model_step_control_h
+
+#include <masonry/brickwork/wallette.h>
+#include <masonry/core/json.h>
+
+#include <memory>
+
+#include "curve.h"
+
+namespace masonry
+{
+  namespace brickwork
+  {
+    namespace model
+    {
+      /** A leg of the displacement protocol. */
+      struct Segment
+      {
+        /** Platen displacement to reach (loading) or the lowest allowed
+         * (unloading), m along the direction. */
+        double       target;
+        bool         unloading;
+        unsigned int cycle;
+      };
+
+      /** The legs of the platen's motion. */
+      class Protocol
+      {
+      public:
+        virtual ~Protocol() = default;
+        /** The legs in order. */
+        virtual std::vector<Segment>
+        legs() const = 0;
+        /** The platen displacement at which cycle @p cycle (from 1) turns
+         * back, m. */
+        virtual double
+        amplitude(const unsigned int cycle) const = 0;
+      };
+
+      /** The protocol `Protocol' selects. */
+      std::unique_ptr<Protocol>
+      create_protocol(const ProtocolSettings &settings);
+
+      /** The protocol's position, stored in checkpoints. */
+      struct Progress
+      {
+        double       applied = 0, increment = 0, time = 0;
+        unsigned int step = 0, easy_steps = 0, segment = 0;
+        /** Platen displacement increment of the last converged step. */
+        double last_increment = 0;
+        template <class Archive>
+        void
+        serialize(Archive &ar, const unsigned int)
+        {
+          ar &applied &increment &time &step &easy_steps &segment
+            &last_increment;
+        }
+      };
+
+      /**
+       * The next platen position of leg @p leg from the current one
+       * (progress.applied) and the curve so far; false when the leg is
+       * done (progress.segment then points to the next leg).
+       */
+      bool
+      next_position(const Segment                 &leg,
+                    const std::vector<CurvePoint> &curve,
+                    const ProtocolSettings        &settings,
+                    const double                   nominal,
+                    Progress                      &progress,
+                    double                        &next);
+
+      /** How the step size follows the steps' difficulty. */
+      class StepSizeControl
+      {
+      public:
+        virtual ~StepSizeControl() = default;
+        /**
+         * A converged step of size @p taken with damage error @p error:
+         * whether to redo it smaller (then progress.increment is set).
+         */
+        virtual bool
+        redo(const double taken, const double error, Progress &progress);
+        /** An accepted step of @p iterations Newton iterations and damage
+         * error @p error: the next increment. */
+        virtual void
+        after_step(const unsigned int iterations,
+                   const double       error,
+                   Progress          &progress) = 0;
+        /** Counters into summary.json. */
+        virtual void
+        write_summary(Json &summary) const;
+        /** Write or read the counters. */
+        template <class Archive>
+        void
+        serialize(Archive &ar, const unsigned int)
+        {
+          ar &max_error &n_over_tolerance &n_redone;
+        }
+
+      protected:
+        /** Largest damage error of an accepted step; steps accepted over
+         * the tolerance (at the minimum step); steps redone. */
+        double       max_error        = 0;
+        unsigned int n_over_tolerance = 0, n_redone = 0;
+      };
+
+      /** The control of the integrator `Damage integration' selects:
+       * Newton iterations (implicit) or the damage error (IMPL-EX). */
+      std::unique_ptr<StepSizeControl>
+      create_step_size_control(const IntegratorSettings &integrator,
+                               const ProtocolSettings   &protocol,
+                               const NewtonSettings     &newton,
+                               const double              nominal);
+    } // namespace model
+  }   // namespace brickwork
+} // namespace masonry
+
+#endif

@@ -1,0 +1,200 @@
+/**
+ * @file
+ * DoFs, platen conditions, sparsity, vectors.
+ */
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
+
+#include "system.h"
+
+#include <set>
+
+namespace masonry
+{
+  namespace brickwork
+  {
+    namespace model
+    {
+      using namespace dealii;
+
+      System::System(const parallel::shared::Triangulation<3> &tria,
+                     MPI_Comm                                  comm)
+        : comm(comm)
+        , triangulation(tria)
+        , fe(FE_Q<3>(1), 3)
+        , dof_handler(tria)
+      {}
+
+      void
+      System::distribute_dofs()
+      {
+        dof_handler.distribute_dofs(fe);
+        owned    = dof_handler.locally_owned_dofs();
+        relevant = complete_index_set(dof_handler.n_dofs());
+      }
+
+      namespace
+      {
+        /** The mesh vertices nearest to the ends of a gauge of @p length on
+         * the front face at mid-length, centred at mid-height. */
+        void
+        find_gauge(const DoFHandler<3> &dof_handler,
+                   const Geometry      &g,
+                   const double         length,
+                   std::array<std::array<types::global_dof_index, 3>, 2> &dofs,
+                   double                                                &span)
+        {
+          const double   tol     = 1e-9 * g.height;
+          const Point<3> ends[2] = {
+            Point<3>(g.length / 2, 0, (g.height - length) / 2),
+            Point<3>(g.length / 2, 0, (g.height + length) / 2)};
+          double   best[2] = {1e300, 1e300};
+          Point<3> where[2];
+          for (const auto &cell : dof_handler.active_cell_iterators())
+            for (const unsigned int v : cell->vertex_indices())
+              if (std::abs(cell->vertex(v)[1]) < tol)
+                for (unsigned int e = 0; e < 2; ++e)
+                  if (cell->vertex(v).distance(ends[e]) < best[e] - tol)
+                    {
+                      best[e]  = cell->vertex(v).distance(ends[e]);
+                      where[e] = cell->vertex(v);
+                      for (unsigned int d = 0; d < 3; ++d)
+                        dofs[e][d] = cell->vertex_dof_index(v, d);
+                    }
+          span = where[1][2] - where[0][2];
+          AssertThrow(span > 0,
+                      ExcMessage("the gauge length is shorter than an "
+                                 "element: no two mesh points along it"));
+        }
+      } // namespace
+
+      void
+      System::setup(const Joints         &joints,
+                    const Geometry       &g,
+                    const PlatenSettings &platen)
+      {
+        direction = platen.direction;
+        // Dirichlet conditions of the platens; increments are zero there
+        const double tol = 1e-9 * g.height;
+        const bool   vertical =
+          std::abs(direction[0]) < 1e-12 && std::abs(direction[1]) < 1e-12;
+        AssertThrow(platen.lateral_fixed || vertical,
+                    ExcMessage("the platens must be laterally fixed "
+                               "('Platen lateral restraint = fixed') when "
+                               "the platen moves sideways"));
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary() && f / 2 == 2)
+              {
+                const double z = cell->face(f)->center()[2];
+                if (std::abs(z) > tol && std::abs(z - g.height) > tol)
+                  continue;
+                for (unsigned int v = 0; v < 4; ++v)
+                  {
+                    const Point<3> p = cell->face(f)->vertex(v);
+                    for (unsigned int d = 0; d < 3; ++d)
+                      {
+                        const auto i   = cell->face(f)->vertex_dof_index(v, d);
+                        bool       fix = platen.lateral_fixed || d == 2;
+                        // free platens: pin the rigid motions in the plane
+                        if (!fix && std::abs(z) < tol && std::abs(p[1]) < tol &&
+                            (std::abs(p[0]) < tol ||
+                             (d == 1 && std::abs(p[0] - g.length) < tol)))
+                          fix = true;
+                        if (fix)
+                          platen_lines.push_back(i);
+                        if (std::abs(z - g.height) < tol)
+                          top_dofs.emplace_back(i, d);
+                      }
+                  }
+              }
+        std::sort(platen_lines.begin(), platen_lines.end());
+        platen_lines.erase(std::unique(platen_lines.begin(),
+                                       platen_lines.end()),
+                           platen_lines.end());
+        // remove duplicates of the top DOFs (shared vertices within a brick)
+        std::sort(top_dofs.begin(), top_dofs.end());
+        top_dofs.erase(std::unique(top_dofs.begin(), top_dofs.end()),
+                       top_dofs.end());
+        make_constraints();
+        for (const auto &td : top_dofs)
+          if (zero_constraints.is_constrained(td.first))
+            constrained_top.push_back(td);
+
+        if (platen.gauge_length > 0)
+          find_gauge(
+            dof_handler, g, platen.gauge_length, gauge_dofs, gauge_span);
+
+        DynamicSparsityPattern dsp(relevant);
+        DoFTools::make_sparsity_pattern(dof_handler,
+                                        dsp,
+                                        zero_constraints,
+                                        false,
+                                        Utilities::MPI::this_mpi_process(comm));
+        for (const auto &face : joints.faces)
+          if (face.owned)
+            zero_constraints.add_entries_local_to_global(face.dofs, dsp, false);
+        SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);
+        matrix.reinit(owned, owned, dsp, comm);
+
+        u.reinit(owned, comm);
+        f_int.reinit(owned, comm);
+        ghosted.reinit(owned, relevant, comm);
+      }
+
+      void
+      System::make_constraints()
+      {
+        zero_constraints.clear();
+        zero_constraints.reinit(relevant);
+        for (const auto i : platen_lines)
+          zero_constraints.add_line(i);
+        for (const auto i : orphans)
+          if (!zero_constraints.is_constrained(i))
+            zero_constraints.add_line(i);
+        zero_constraints.close();
+      }
+
+      void
+      System::set_platen(Vector &v, const double disp) const
+      {
+        for (const auto &td : constrained_top)
+          if (owned.is_element(td.first))
+            v[td.first] = disp * direction[td.second];
+        v.compress(VectorOperation::insert);
+      }
+
+      double
+      System::reaction() const
+      {
+        double r = 0;
+        for (const auto &td : top_dofs)
+          if (owned.is_element(td.first))
+            r += f_int[td.first] * direction[td.second];
+        return Utilities::MPI::sum(r, comm);
+      }
+
+      double
+      System::gauge_strain()
+      {
+        if (gauge_span <= 0)
+          return 0;
+        ghosted_solution();
+        double e = 0;
+        for (unsigned int d = 0; d < 3; ++d)
+          e += (ghosted[gauge_dofs[1][d]] - ghosted[gauge_dofs[0][d]]) *
+               direction[d] / gauge_span;
+        return e;
+      }
+
+      const System::Vector &
+      System::ghosted_solution()
+      {
+        ghosted = u;
+        return ghosted;
+      }
+    } // namespace model
+  }   // namespace brickwork
+} // namespace masonry

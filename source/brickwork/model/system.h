@@ -1,0 +1,97 @@
+/**
+ * @file
+ * The linear-algebra system of the wallette: DoFs, the platen conditions
+ * (and the nodes left without a cell by deletions), the sparse matrix, the
+ * solution and internal-force vectors, the platen reaction and the gauge.
+ */
+#ifndef masonry_brickwork_model_system_h
+#define masonry_brickwork_model_system_h
+
+#include <masonry/brickwork/wallette.h>
+
+#include <deal.II/distributed/shared_tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include "joints.h"
+#include "mesh.h"
+
+namespace masonry
+{
+  namespace brickwork
+  {
+    namespace model
+    {
+      /** DoFs, constraints, matrix and vectors of one wallette. */
+      class System
+      {
+      public:
+        using Vector = dealii::TrilinosWrappers::MPI::Vector;
+
+        System(const dealii::parallel::shared::Triangulation<3> &tria,
+               MPI_Comm                                          comm);
+
+        /** Number the DoFs (before the joints are found). */
+        void
+        distribute_dofs();
+
+        /**
+         * Platen conditions, the gauge, the sparsity of bricks and
+         * @p joints, the matrix and vectors.
+         */
+        void
+        setup(const Joints         &joints,
+              const Geometry       &geometry,
+              const PlatenSettings &platen);
+
+        /** The constraints of the increments: platen DOFs and @p orphans
+         * (the DOFs in no remaining cell). */
+        void
+        make_constraints();
+
+        /** The platen displacement @p disp (m, along the direction) into
+         * the platen entries of @p v. */
+        void
+        set_platen(Vector &v, const double disp) const;
+
+        /** The platen force along the direction from @p f_int, N. */
+        double
+        reaction() const;
+
+        /** Strain of the gauge (0 without one) at the solution u. */
+        double
+        gauge_strain();
+
+        /** Copy u into the ghosted vector (every entry on every rank). */
+        const Vector &
+        ghosted_solution();
+
+        MPI_Comm                                          comm;
+        const dealii::parallel::shared::Triangulation<3> &triangulation;
+        dealii::FESystem<3>                               fe;
+        dealii::DoFHandler<3>                             dof_handler;
+        dealii::IndexSet                                  owned, relevant;
+        dealii::AffineConstraints<double>                 zero_constraints;
+        dealii::TrilinosWrappers::SparseMatrix            matrix;
+        /** Owned vectors; `ghosted` holds every entry on every rank. */
+        Vector u, f_int, ghosted;
+        /** DOFs held by the platens; DOFs in no remaining cell. */
+        std::vector<dealii::types::global_dof_index> platen_lines, orphans;
+        /** Top platen DOFs with their components: (dof, component). */
+        std::vector<std::pair<dealii::types::global_dof_index, unsigned int>>
+          top_dofs, constrained_top;
+        /** DOFs of the two gauge points and their distance (0: none). */
+        std::array<std::array<dealii::types::global_dof_index, 3>, 2>
+               gauge_dofs;
+        double gauge_span = 0;
+        /** Direction of the platen's motion. */
+        std::array<double, 3> direction{{0, 0, -1}};
+      };
+    } // namespace model
+  }   // namespace brickwork
+} // namespace masonry
+
+#endif

@@ -1,0 +1,267 @@
+/**
+ * @file
+ * The brick fields: displacement (m), cell-averaged stress (Pa), the
+ * quantities the brick material reports, MPI subdomain and deleted cells, as
+ * a VTU/PVTU time series (solution.pvd) or HDF5 + XDMF (solution.xdmf).
+ */
+#include <masonry/core/output_directory.h>
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/numerics/data_out.h>
+
+#include <boost/archive/text_iarchive.hpp>
+#include <boost/archive/text_oarchive.hpp>
+#include <boost/serialization/map.hpp>
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/utility.hpp>
+#include <boost/serialization/vector.hpp>
+
+#include <fstream>
+#include <sstream>
+
+#include "postprocessor.h"
+
+namespace masonry
+{
+  namespace brickwork
+  {
+    namespace postprocess
+    {
+      using namespace dealii;
+
+      namespace
+      {
+        /** solution.pvd / solution.xdmf and their files. */
+        class Fields : public Postprocessor
+        {
+        public:
+          void
+          output(const ModelView   &view,
+                 const unsigned int step,
+                 const double       time) override;
+
+          /** The lists of output steps, so that solution.pvd and
+           * solution.xdmf of a resumed run list the whole run. */
+          std::string
+          save() const override
+          {
+            std::ostringstream out;
+            {
+              boost::archive::text_oarchive ar(out);
+              ar << pvd << xdmf;
+            }
+            return out.str();
+          }
+
+          void
+          load(const std::string &data) override
+          {
+            std::istringstream            in(data);
+            boost::archive::text_iarchive ar(in);
+            ar >> pvd >> xdmf;
+          }
+
+        private:
+          /** Cell fields from the converged states, added to @p data_out
+           * (the vectors must live until the patches are built). */
+          void
+          cell_fields(const ModelView            &view,
+                      const System::Vector       &ghosted,
+                      std::vector<Vector<float>> &fields,
+                      std::vector<std::string>   &names) const;
+
+          void
+          write_hdf5(const ModelView   &view,
+                     DataOut<3>        &data_out,
+                     const unsigned int step,
+                     const double       time);
+
+          void
+          write_vtu(const ModelView   &view,
+                    DataOut<3>        &data_out,
+                    const unsigned int step,
+                    const double       time);
+
+          /** The steps written: (time, file). */
+          std::vector<std::pair<double, std::string>> pvd;
+          /** The steps of solution.xdmf (`Output format = hdf5'). */
+          std::vector<XDMFEntry> xdmf;
+        };
+
+        void
+        Fields::cell_fields(const ModelView            &view,
+                            const System::Vector       &ghosted,
+                            std::vector<Vector<float>> &fields,
+                            std::vector<std::string>   &names) const
+        {
+          const BrickMaterial &material = view.material;
+          const unsigned int   n_cells =
+            view.system.triangulation.n_active_cells();
+          const std::vector<std::string> reported =
+            material.is_linear() ? std::vector<std::string>() :
+                                   material.reported_quantities();
+          names = {"stress_xx",
+                   "stress_yy",
+                   "stress_zz",
+                   "stress_xy",
+                   "stress_yz",
+                   "stress_xz",
+                   "subdomain"};
+          names.insert(names.end(), reported.begin(), reported.end());
+          const unsigned int first_reported = 7;
+          if (view.settings.specimen.deletion_strain > 0)
+            names.emplace_back("deleted");
+          fields.assign(names.size(), Vector<float>(n_cells));
+          QGauss<3>   quadrature(2);
+          FEValues<3> fe_values(view.system.fe, quadrature, update_gradients);
+          std::vector<SymmetricTensor<2, 3>> eps(8);
+          const FEValuesExtractors::Vector   displacement(0);
+          const unsigned int                 n_state = view.bricks.n_values();
+          std::vector<double>                initial(n_state), scratch(n_state),
+            values(reported.size());
+          material.initial_state(initial);
+          for (const auto &cell :
+               view.system.dof_handler.active_cell_iterators())
+            if (cell->is_locally_owned())
+              {
+                const unsigned int c = cell->active_cell_index();
+                fields[6][c]         = cell->subdomain_id();
+                if (view.settings.specimen.deletion_strain > 0)
+                  fields.back()[c] = view.specimen.deleted[c];
+                if (view.specimen.deleted[c])
+                  continue;
+                fe_values.reinit(cell);
+                fe_values[displacement].get_function_symmetric_gradients(
+                  ghosted, eps);
+                BrickPoint point;
+                point.characteristic_length = view.specimen.cell_length[c];
+                point.strength_factor       = view.specimen.cell_factor[c];
+                SymmetricTensor<2, 3> sigma, mean;
+                SymmetricTensor<4, 3> C;
+                for (unsigned int q = 0; q < 8; ++q)
+                  {
+                    if (material.is_linear())
+                      material.evaluate(
+                        eps[q], initial, point, scratch, sigma, C);
+                    else
+                      {
+                        // from the converged state at the converged
+                        // strain: no further loading, the stress of the
+                        // step
+                        const ConstStateView old = view.bricks.old(8 * c + q);
+                        material.evaluate(
+                          eps[q], old, point, scratch, sigma, C);
+                        material.report(old, values);
+                        for (unsigned int k = 0; k < values.size(); ++k)
+                          fields[first_reported + k][c] += values[k] / 8;
+                      }
+                    mean += sigma / 8;
+                  }
+                const unsigned int ij[6][2] = {
+                  {0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {0, 2}};
+                for (unsigned int k = 0; k < 6; ++k)
+                  fields[k][c] = mean[ij[k][0]][ij[k][1]];
+              }
+        }
+
+        void
+        Fields::output(const ModelView   &view,
+                       const unsigned int step,
+                       const double       time)
+        {
+          const System::Vector ghosted = view.ghosted_solution();
+          DataOut<3>           data_out;
+          data_out.attach_dof_handler(view.system.dof_handler);
+          std::vector<std::string> names(3, "displacement");
+          std::vector<DataComponentInterpretation::DataComponentInterpretation>
+            interpretation(
+              3, DataComponentInterpretation::component_is_part_of_vector);
+          data_out.add_data_vector(ghosted,
+                                   names,
+                                   DataOut<3>::type_dof_data,
+                                   interpretation);
+          // stress (Pa) and the reported quantities averaged over the
+          // cell's quadrature points, from the converged states
+          std::vector<Vector<float>> fields;
+          std::vector<std::string>   field_names;
+          cell_fields(view, ghosted, fields, field_names);
+          for (unsigned int k = 0; k < fields.size(); ++k)
+            data_out.add_data_vector(fields[k], field_names[k]);
+          data_out.build_patches();
+          if (view.settings.output.hdf5)
+            write_hdf5(view, data_out, step, time);
+          else
+            write_vtu(view, data_out, step, time);
+        }
+
+        void
+        Fields::write_hdf5(const ModelView   &view,
+                           DataOut<3>        &data_out,
+                           const unsigned int step,
+                           const double       time)
+        {
+          // mesh and fields of this step in one HDF5 file, written by all
+          // ranks; solution.xdmf lists the steps with their times
+          const MPI_Comm             comm = view.system.comm;
+          const std::string          dir  = view.context.output.path() + "/";
+          DataOutBase::DataOutFilter filter(
+            DataOutBase::DataOutFilterFlags(false, true));
+          data_out.write_filtered_data(filter);
+          const std::string h5 =
+            "solution_" + Utilities::int_to_string(step, 4) + ".h5";
+          data_out.write_hdf5_parallel(filter, dir + h5, comm);
+          const XDMFEntry entry =
+            data_out.create_xdmf_entry(filter, h5, time, comm);
+          if (!pvd.empty() && pvd.back().second == h5)
+            xdmf.back() = entry;
+          else
+            {
+              xdmf.push_back(entry);
+              pvd.emplace_back(time, h5);
+            }
+          data_out.write_xdmf_file(xdmf, dir + "solution.xdmf", comm);
+          view.context.output.file(h5);
+          view.context.output.file("solution.xdmf");
+        }
+
+        void
+        Fields::write_vtu(const ModelView   &view,
+                          DataOut<3>        &data_out,
+                          const unsigned int step,
+                          const double       time)
+        {
+          const MPI_Comm    comm = view.system.comm;
+          const std::string dir  = view.context.output.path() + "/";
+          const std::string pvtu =
+            data_out.write_vtu_with_pvtu_record(dir, "solution", step, comm, 4);
+          // the last state of a stopped run may repeat the last output step
+          if (pvd.empty() || pvd.back().second != pvtu)
+            pvd.emplace_back(time, pvtu);
+          // record the files written by DataOut
+          view.context.output.file(pvtu);
+          const std::string stem =
+            "solution_" + Utilities::int_to_string(step, 4);
+          const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+          for (unsigned int r = 0; r < n_ranks; ++r)
+            view.context.output.file(
+              stem + "." +
+              Utilities::int_to_string(r,
+                                       Utilities::needed_digits(n_ranks - 1)) +
+              ".vtu");
+          if (Utilities::MPI::this_mpi_process(comm) == 0)
+            {
+              std::ofstream out(view.context.output.file("solution.pvd"));
+              DataOutBase::write_pvd_record(out, pvd);
+            }
+        }
+      } // namespace
+
+      std::unique_ptr<Postprocessor>
+      create_fields()
+      {
+        return std::make_unique<Fields>();
+      }
+    } // namespace postprocess
+  }   // namespace brickwork
+} // namespace masonry

@@ -1,0 +1,184 @@
+/**
+ * @file
+ * The joint fields: one quadrilateral per face pair with the quantities the
+ * interface law reports (averaged over the face's points), the normal
+ * opening and the slip at its centre (m) and the joint type, as a VTU time
+ * series (interfaces.pvd).
+ */
+#include <masonry/core/output_directory.h>
+
+#include <deal.II/base/data_out_base.h>
+
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+#include "postprocessor.h"
+
+namespace masonry
+{
+  namespace brickwork
+  {
+    namespace postprocess
+    {
+      using namespace dealii;
+
+      namespace
+      {
+        /** interfaces.pvd and interfaces_NNNN.vtu. */
+        class JointFields : public Postprocessor
+        {
+        public:
+          void
+          output(const ModelView   &view,
+                 const unsigned int step,
+                 const double       time) override;
+
+          std::string
+          save() const override
+          {
+            std::ostringstream out;
+            out << std::setprecision(17);
+            for (const auto &entry : pvd)
+              out << entry.first << " " << entry.second << "\n";
+            return out.str();
+          }
+
+          void
+          load(const std::string &data) override
+          {
+            pvd.clear();
+            std::istringstream in(data);
+            double             time;
+            std::string        file;
+            while (in >> time >> file)
+              pvd.emplace_back(time, file);
+          }
+
+        private:
+          /** Per face: the reported quantities, then opening, slip and
+           * type, summed over the ranks. */
+          std::vector<std::vector<double>>
+          face_values(const ModelView          &view,
+                      std::vector<std::string> &names) const;
+
+          /** The steps written: (time, file). */
+          std::vector<std::pair<double, std::string>> pvd;
+        };
+
+        std::vector<std::vector<double>>
+        JointFields::face_values(const ModelView          &view,
+                                 std::vector<std::string> &names) const
+        {
+          const auto        &faces      = view.joints.faces;
+          const unsigned int n          = faces.size();
+          const unsigned int n_quad     = model::InterfaceElement::n_points;
+          names                         = view.law.reported_quantities();
+          const unsigned int n_reported = names.size();
+          names.insert(names.end(),
+                       {"normal_opening",
+                        "slip",
+                        "joint_type_bed0_head1_collar2"});
+          std::vector<std::vector<double>> values(names.size(),
+                                                  std::vector<double>(n, 0));
+          const System::Vector             ghosted = view.ghosted_solution();
+          std::vector<double>              reported(n_reported);
+          for (unsigned int i = 0; i < n; ++i)
+            if (faces[i].owned)
+              {
+                const auto        &face = faces[i];
+                const unsigned int a    = face.axis;
+                for (unsigned int q = 0; q < n_quad; ++q)
+                  {
+                    view.law.report(view.joint_points.old(n_quad * i + q),
+                                    reported);
+                    for (unsigned int k = 0; k < n_reported; ++k)
+                      values[k][i] += reported[k] / n_quad;
+                  }
+                // opening at the centre of the face
+                Tensor<1, 3> jump;
+                for (unsigned int v = 0; v < 4; ++v)
+                  for (unsigned int d = 0; d < 3; ++d)
+                    jump[d] += 0.25 * (ghosted[face.dofs[12 + 3 * v + d]] -
+                                       ghosted[face.dofs[3 * v + d]]);
+                values[n_reported][i] = jump[a];
+                values[n_reported + 1][i] =
+                  std::hypot(jump[(a + 1) % 3], jump[(a + 2) % 3]);
+              }
+          for (unsigned int k = 0; k < n_reported + 2; ++k)
+            MPI_Allreduce(MPI_IN_PLACE,
+                          values[k].data(),
+                          n,
+                          MPI_DOUBLE,
+                          MPI_SUM,
+                          view.system.comm);
+          for (unsigned int i = 0; i < n; ++i)
+            values.back()[i] = faces[i].type;
+          return values;
+        }
+
+        void
+        JointFields::output(const ModelView   &view,
+                            const unsigned int step,
+                            const double       time)
+        {
+          std::vector<std::string>               names;
+          const std::vector<std::vector<double>> values =
+            face_values(view, names);
+          std::ostringstream name;
+          name << "interfaces_" << std::setw(4) << std::setfill('0') << step
+               << ".vtu";
+          const std::string file = view.context.output.file(name.str());
+          if (pvd.empty() || pvd.back().second != name.str())
+            pvd.emplace_back(time, name.str());
+          if (Utilities::MPI::this_mpi_process(view.system.comm) != 0)
+            return;
+          const auto        &faces = view.joints.faces;
+          const unsigned int n     = faces.size();
+          std::ofstream      out(file);
+          out << std::setprecision(10);
+          out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" "
+                 "version=\"0.1\" byte_order=\"LittleEndian\">\n"
+                 "<UnstructuredGrid>\n<Piece NumberOfPoints=\""
+              << 4 * n << "\" NumberOfCells=\"" << n << "\">\n"
+              << "<Points>\n<DataArray type=\"Float64\" "
+                 "NumberOfComponents=\"3\" format=\"ascii\">\n";
+          const unsigned int order[4] = {0, 1, 3, 2};
+          for (const auto &face : faces)
+            for (unsigned int v = 0; v < 4; ++v)
+              out << face.vertices[order[v]] << "\n";
+          out << "</DataArray>\n</Points>\n<Cells>\n<DataArray "
+                 "type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+          for (unsigned int i = 0; i < 4 * n; ++i)
+            out << i << (i % 4 == 3 ? "\n" : " ");
+          out << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" "
+                 "format=\"ascii\">\n";
+          for (unsigned int i = 0; i < n; ++i)
+            out << 4 * (i + 1) << "\n";
+          out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" "
+                 "format=\"ascii\">\n";
+          for (unsigned int i = 0; i < n; ++i)
+            out << "9\n";
+          out << "</DataArray>\n</Cells>\n<CellData>\n";
+          for (unsigned int k = 0; k < names.size(); ++k)
+            {
+              out << "<DataArray type=\"Float64\" Name=\"" << names[k]
+                  << "\" format=\"ascii\">\n";
+              for (const double x : values[k])
+                out << x << "\n";
+              out << "</DataArray>\n";
+            }
+          out << "</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+          std::ofstream pvd_out(view.context.output.file("interfaces.pvd"));
+          DataOutBase::write_pvd_record(pvd_out, pvd);
+        }
+      } // namespace
+
+      std::unique_ptr<Postprocessor>
+      create_joint_fields()
+      {
+        return std::make_unique<JointFields>();
+      }
+    } // namespace postprocess
+  }   // namespace brickwork
+} // namespace masonry
