@@ -579,6 +579,82 @@ main()
   }
 
   // ---------------------------------------------------------------------
+  // the tangent in a global Newton solve: a joint in series with a unit
+  // (k_b = E_b / h_b = 10 GPa / 65 mm per unit area), (a) displacement-
+  // controlled compression through the cap's peak into its tail, (b) a
+  // constant normal load of -0.5 MPa and a prescribed shear displacement
+  // (with dilatancy 0.1, so that normal and shear are coupled). Every step
+  // converges to 1e-10 of the strengths in at most 5 iterations (2 and 3
+  // are needed; with the elastic tangent neither path converges in 30).
+  {
+    CompositeJoint::Parameters q = p;
+    q.dilatancy                  = 0.1;
+    const CompositeJoint law_q(q);
+    const double         kb      = 10e9 / 0.065;
+    unsigned int         worst_a = 0, worst_b = 0;
+    bool                 converged = true;
+    {
+      CompositeJointState s;
+      double              u_n = 0;
+      for (unsigned int k = 1; k <= 200; ++k)
+        {
+          const double U = -k * 5e-6; // to 1 mm
+          unsigned int it;
+          for (it = 0; it < 30; ++it)
+            {
+              CompositeJointState s1;
+              Vector3             t;
+              Matrix3             D;
+              law_q.evaluate({{u_n, 0, 0}}, s, s1, t, D);
+              const double r = t[0] - kb * (U - u_n);
+              if (std::abs(r) < 1e-10 * q.cap_strength)
+                {
+                  s = s1;
+                  break;
+                }
+              u_n -= r / (D[0][0] + kb);
+            }
+          converged = converged && it < 30;
+          worst_a   = std::max(worst_a, it);
+        }
+    }
+    {
+      CompositeJointState s;
+      double              u[2] = {-0.5e6 / q.normal_stiffness, 0};
+      const double        kbs  = kb / 2.3; // G_b / h_b, nu_b = 0.15
+      for (unsigned int k = 1; k <= 200; ++k)
+        {
+          const double S = k * 5e-6; // to 1 mm of slip
+          unsigned int it;
+          for (it = 0; it < 30; ++it)
+            {
+              CompositeJointState s1;
+              Vector3             t;
+              Matrix3             D;
+              law_q.evaluate({{u[0], u[1], 0}}, s, s1, t, D);
+              const double r0 = t[0] + 0.5e6, r1 = t[1] - kbs * (S - u[1]);
+              if (std::abs(r0) + std::abs(r1) < 1e-10 * q.cohesion)
+                {
+                  s = s1;
+                  break;
+                }
+              const double a00 = D[0][0], a01 = D[0][1], a10 = D[1][0],
+                           a11 = D[1][1] + kbs;
+              const double det = a00 * a11 - a01 * a10;
+              u[0] -= (a11 * r0 - a01 * r1) / det;
+              u[1] -= (a00 * r1 - a10 * r0) / det;
+            }
+          converged = converged && it < 30;
+          worst_b   = std::max(worst_b, it);
+        }
+    }
+    check(converged && worst_a <= 5 && worst_b <= 5,
+          "Newton with the algorithmic tangent: unit + joint in compression "
+          "through the cap peak, and under constant normal load in shear "
+          "with dilatancy, every step in <= 5 iterations");
+  }
+
+  // ---------------------------------------------------------------------
   // Lourenço-Rots penalties: E_b = 10 GPa, E_m = 2 GPa, h_m = 10 mm give
   // k_n = 2.5e11 Pa/m; nu = 0.15 and 0.2: G_b = 4.3478 GPa, G_m = 0.8333 GPa
   {
