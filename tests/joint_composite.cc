@@ -18,6 +18,9 @@
  * - the algorithmic tangent equals central differences of the traction
  *   in every regime (elastic, tension, shear, cap hardening and
  *   softening, both corners);
+ * - IMPL-EX: the extrapolated, frozen plastic jump gives t = D_e (u - u_p*);
+ * - a global Newton solve (unit in series with the joint) converges in a few
+ *   iterations with the algorithmic tangent;
  * - the Lourenço-Rots penalties from E_b, E_m, nu and the joint thickness.
  */
 #include <masonry/brickwork/laws/composite_joint.h>
@@ -447,6 +450,44 @@ main()
     check(half && contact && reopen,
           "crack closure: no traction while the crack closes, contact "
           "k_n u_n from u_n = 0, elastic reopening");
+  }
+
+  // ---------------------------------------------------------------------
+  // IMPL-EX: the plastic jump extrapolated linearly from two converged
+  // states (ratio 1: u_p* = 2 u_p,old - u_p,older) and frozen:
+  // t = D_e (u - u_p*), tangent D_e; an open crack closes without traction
+  {
+    CompositeJointState older, old, s;
+    Vector3             t;
+    Matrix3             D;
+    // two converged states of a softening opening with some slip
+    law.evaluate({{4e-5, 1e-5, 0}}, CompositeJointState(), older, t, D);
+    law.evaluate({{5e-5, 1.2e-5, 0}}, older, old, t, D);
+    const CompositeJointState e = law.extrapolate(old, older, 1.);
+    const Vector3             u{{6e-5, 1.4e-5, -1e-6}};
+    law.evaluate_frozen(u, e, t, D);
+    bool ok = old.crack_opening > older.crack_opening && old.xi > older.xi;
+    for (unsigned int i = 0; i < 3; ++i)
+      {
+        const double up = 2 * old.plastic_jump[i] - older.plastic_jump[i];
+        const double k  = i == 0 ? kn : ks;
+        ok = ok && std::abs(t[i] - k * (u[i] - up)) < 1e-9 * k * 1e-5 &&
+             std::abs(D[i][i] - k) == 0;
+      }
+    ok = ok && std::abs(e.xi - (2 * old.xi - older.xi)) < 1e-12 &&
+         std::abs(e.crack_opening -
+                  (2 * old.crack_opening - older.crack_opening)) < 1e-15;
+    // pushed back below the crack: no traction, zero normal tangent
+    Vector3 t2;
+    law.evaluate_frozen({{0.5 * e.crack_opening, 0, 0}}, e, t2, D);
+    ok = ok && t2[0] == 0 && D[0][0] == 0;
+    // below the closed crack: contact from u_p* - w*
+    const double closed = e.plastic_jump[0] - e.crack_opening;
+    law.evaluate_frozen({{closed - 1e-6, 0, 0}}, e, t2, D);
+    ok = ok && std::abs(t2[0] + kn * 1e-6) < 1e-9 * kn * 1e-6 && D[0][0] == kn;
+    check(ok,
+          "IMPL-EX: t = D_e (u - u_p*) with u_p* = 2 u_p,old - u_p,older, "
+          "tangent D_e; an open crack closes without traction");
   }
 
   // ---------------------------------------------------------------------
