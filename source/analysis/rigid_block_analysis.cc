@@ -1,9 +1,9 @@
 #include <masonry/adaptation/optimiser.h>
 #include <masonry/analysis/rigid_block_analysis.h>
-#include <masonry/config.h>
 #include <masonry/core/json.h>
 #include <masonry/core/output_directory.h>
 #include <masonry/core/parameters.h>
+#include <masonry/core/scripts.h>
 #include <masonry/geometry/interface.h>
 #include <masonry/rigid_blocks/interface_model.h>
 
@@ -404,17 +404,16 @@ namespace masonry
       }
       if (output_options.write_picture)
         {
-          const std::string script = std::string(MASONRY_SOURCE_DIR) +
-                                     "/contrib/plot/adaptation_plot.py";
+          const std::string script  = find_script("adaptation_plot.py");
           const std::string dir     = context.output.path();
           const std::string command = "/usr/bin/python3 '" + script + "' '" +
                                       dir + "adaptation.csv' '" + dir +
                                       "adaptation.png' >/dev/null 2>&1";
-          if (std::system(command.c_str()) == 0)
+          if (!script.empty() && std::system(command.c_str()) == 0)
             context.output.file("adaptation.png");
           else
-            pcout << "Note: adaptation.png not written (" << script
-                  << " with /usr/bin/python3 and matplotlib)\n";
+            pcout << "Note: adaptation.png not written (adaptation_plot.py "
+                     "with /usr/bin/python3 and matplotlib)\n";
         }
     }
 

@@ -1,5 +1,5 @@
-#include <masonry/config.h>
 #include <masonry/core/output_directory.h>
+#include <masonry/core/scripts.h>
 #include <masonry/geometry/interface.h>
 #include <masonry/rigid_blocks/output.h>
 
@@ -399,11 +399,9 @@ namespace masonry
       const auto picture_start = std::chrono::steady_clock::now();
       if (options.write_picture)
         {
-          const std::string script =
-            std::string(MASONRY_SOURCE_DIR) + "/contrib/plot/vault_picture.py";
+          const std::string script = find_script("vault_picture.py");
           const std::string python = "/usr/bin/python3";
-          if (std::filesystem::exists(script) &&
-              std::filesystem::exists(python))
+          if (!script.empty() && std::filesystem::exists(python))
             {
               const std::string  png = dir.path() + "vault.png";
               std::ostringstream amplification_text;
@@ -421,8 +419,9 @@ namespace masonry
                                  "failed; install python3-matplotlib)\n";
             }
           else
-            context.pcout << "Note: vault.png not written (" << script << " or "
-                          << python << " not found)\n";
+            context.pcout << "Note: vault.png not written ("
+                          << (script.empty() ? "vault_picture.py" : python)
+                          << " not found)\n";
         }
       const auto end = std::chrono::steady_clock::now();
       // what writing the results costs (not part of the analysis' timings)
