@@ -5,9 +5,9 @@
  *
  * `cmake --install` puts the Python files of contrib/plot/ into
  * `<prefix>/share/masonry/scripts/`, and the build tree holds a copy in
- * `<build>/share/masonry/scripts/` (made when CMake configures), so the same lookup works for an
- * installed and for a built masonry, and nothing points into the source
- * tree. A plugin that renders a picture calls
+ * `<build>/share/masonry/scripts/` (made when CMake configures), so the same
+ * lookup works for an installed and for a built masonry, and nothing points
+ * into the source tree. A plugin that renders a picture calls
  *
  * @code
  * #include <masonry/core/scripts.h>
