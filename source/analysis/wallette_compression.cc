@@ -14,6 +14,8 @@
 
 #include <cmath>
 
+#include "../brickwork/postprocess/postprocessor.h"
+
 namespace masonry
 {
   namespace analysis
@@ -462,6 +464,7 @@ namespace masonry
         bond     = plugins::Registry<brickwork::Bond>::create(prm);
         material = plugins::Registry<brickwork::BrickMaterial>::create(prm);
         law      = plugins::Registry<brickwork::InterfaceLaw>::create(prm);
+        make_postprocessors(prm);
         // lay the bricks now so that --validate finds a mesh that does not
         // fit the bond
         plugins::ParsePathScope scope("Wallette");
@@ -492,10 +495,52 @@ namespace masonry
       void
       run(RunContext &context) override
       {
-        brickwork::run_wallette(boxes, *material, *law, s, context);
+        brickwork::run_wallette(
+          boxes, *material, *law, s, postprocessors, context);
       }
 
     private:
+      /**
+       * The listed postprocessors: `curve tables' first (the curve and the
+       * summary the others use), `fields' and `joint fields' only with
+       * `Write VTU', `curve plot' only with `Write plot', `calculix' also
+       * with `Write CalculiX input'.
+       */
+      void
+      make_postprocessors(dealii::ParameterHandler &prm)
+      {
+        using Family      = brickwork::postprocess::Postprocessor;
+        auto       listed = plugins::Registry<Family>::create_selected(prm);
+        const auto wanted = [&](const std::string &name) {
+          if (name == "fields" || name == "joint fields")
+            return s.output.write_vtu;
+          if (name == "curve plot")
+            return s.output.write_plot;
+          return true;
+        };
+        const auto add = [&](const std::string &name) {
+          for (auto &p : listed)
+            if (p.first == name && p.second)
+              {
+                postprocessors.push_back(std::move(p.second));
+                return true;
+              }
+          return false;
+        };
+        if (!add("curve tables"))
+          postprocessors.push_back(
+            plugins::Registry<Family>::create(prm, "curve tables"));
+        for (auto &p : listed)
+          if (p.second && wanted(p.first))
+            postprocessors.push_back(std::move(p.second));
+        bool calculix = false;
+        for (const auto &p : listed)
+          calculix = calculix || p.first == "calculix";
+        if (s.output.write_calculix && !calculix)
+          postprocessors.push_back(
+            plugins::Registry<Family>::create(prm, "calculix"));
+      }
+
       brickwork::WalletteSettings               s;
       double                                    target_strain = 0.003;
       bool                                      cyclic        = false;
@@ -505,6 +550,8 @@ namespace masonry
       std::unique_ptr<brickwork::BrickMaterial> material;
       std::unique_ptr<brickwork::InterfaceLaw>  law;
       std::vector<brickwork::Box>               boxes;
+      std::vector<std::unique_ptr<brickwork::postprocess::Postprocessor>>
+        postprocessors;
     };
   } // namespace analysis
 } // namespace masonry

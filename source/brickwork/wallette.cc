@@ -50,7 +50,9 @@ namespace masonry
                  const BrickMaterial    &material,
                  const InterfaceLaw     &law,
                  const WalletteSettings &settings,
-                 RunContext             &context);
+                 std::vector<std::unique_ptr<postprocess::Postprocessor>>
+                            &postprocessors,
+                 RunContext &context);
 
         void
         run();
@@ -107,7 +109,8 @@ namespace masonry
         std::unique_ptr<Protocol>          protocol;
         std::unique_ptr<StepSizeControl>   step_control;
         std::unique_ptr<Assembler>         assembler;
-        std::vector<std::unique_ptr<postprocess::Postprocessor>> postprocessors;
+        std::vector<std::unique_ptr<postprocess::Postprocessor>>
+                                  &postprocessors;
         std::vector<std::string>   postprocessor_data;
         Progress                   progress;
         std::vector<CurvePoint>    curve;
@@ -115,11 +118,14 @@ namespace masonry
         std::unique_ptr<ModelView> view;
       };
 
-      Wallette::Wallette(const std::vector<Box> &boxes,
-                         const BrickMaterial    &material,
-                         const InterfaceLaw     &law,
-                         const WalletteSettings &settings,
-                         RunContext             &context)
+      Wallette::Wallette(
+        const std::vector<Box> &boxes,
+        const BrickMaterial    &material,
+        const InterfaceLaw     &law,
+        const WalletteSettings &settings,
+        std::vector<std::unique_ptr<postprocess::Postprocessor>>
+                   &postprocessors,
+        RunContext &context)
         : material(material)
         , law(law)
         , settings(settings)
@@ -133,7 +139,7 @@ namespace masonry
         , integrator(create_integrator(settings.integrator))
         , solver(create_linear_solver(settings.linear_solver, pcout))
         , protocol(create_protocol(settings.protocol))
-        , postprocessors(postprocess::create_postprocessors(settings))
+        , postprocessors(postprocessors)
       {
         setup(boxes);
       }
@@ -577,14 +583,17 @@ namespace masonry
     } // namespace
 
     void
-    run_wallette(const std::vector<Box> &boxes,
-                 const BrickMaterial    &material,
-                 const InterfaceLaw     &law,
-                 const WalletteSettings &settings,
-                 RunContext             &context)
+    run_wallette(
+      const std::vector<Box>                                   &boxes,
+      const BrickMaterial                                      &material,
+      const InterfaceLaw                                       &law,
+      const WalletteSettings                                   &settings,
+      std::vector<std::unique_ptr<postprocess::Postprocessor>> &postprocessors,
+      RunContext                                               &context)
     {
       check_mesh(boxes, settings.mesh);
-      Wallette wallette(boxes, material, law, settings, context);
+      Wallette wallette(
+        boxes, material, law, settings, postprocessors, context);
       wallette.run();
     }
   } // namespace brickwork

@@ -13,6 +13,7 @@
 #include <masonry/core/run_context.h>
 
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,10 @@ namespace masonry
   {
     class BrickMaterial;
     class InterfaceLaw;
+    namespace postprocess
+    {
+      class Postprocessor;
+    }
 
     /** The mesh of enlarged bricks (`Elements along ...', `Joints',
      * `Mesh distortion'). */
@@ -202,13 +207,18 @@ namespace masonry
     void
     check_mesh(const std::vector<Box> &boxes, const MeshSettings &settings);
 
-    /** Build, solve and write the results of a wallette under a platen. */
+    /**
+     * Build, solve and write the results of a wallette under a platen; the
+     * @p postprocessors write the outputs, in their order.
+     */
     void
-    run_wallette(const std::vector<Box> &boxes,
-                 const BrickMaterial    &material,
-                 const InterfaceLaw     &law,
-                 const WalletteSettings &settings,
-                 RunContext             &context);
+    run_wallette(
+      const std::vector<Box>                                   &boxes,
+      const BrickMaterial                                      &material,
+      const InterfaceLaw                                       &law,
+      const WalletteSettings                                   &settings,
+      std::vector<std::unique_ptr<postprocess::Postprocessor>> &postprocessors,
+      RunContext                                               &context);
   } // namespace brickwork
 } // namespace masonry
 

@@ -26,6 +26,10 @@ namespace masonry
         class CalculiX : public Postprocessor
         {
         public:
+          static void
+          declare_parameters(dealii::ParameterHandler &)
+          {}
+
           void
           finish(const ModelView &view, Json &) override;
         };
@@ -117,11 +121,11 @@ namespace masonry
         }
       } // namespace
 
-      std::unique_ptr<Postprocessor>
-      create_calculix()
-      {
-        return std::make_unique<CalculiX>();
-      }
     } // namespace postprocess
   }   // namespace brickwork
 } // namespace masonry
+
+MASONRY_REGISTER_WALLETTE_POSTPROCESSOR(
+  masonry::brickwork::postprocess::CalculiX,
+  "calculix",
+  "calculix.inp (the mesh as C3D8 elements, the elastic brick material, the platen conditions and the final platen displacement as one linear static step, for `ccx -i calculix') and nodal_displacements.csv (this run's final displacements, m, in the same node numbering). Needs `Joints = bonded', an elastic brick material and the monotonic protocol.")

@@ -121,6 +121,10 @@ namespace masonry
         class CurveTables : public Postprocessor
         {
         public:
+          static void
+          declare_parameters(dealii::ParameterHandler &)
+          {}
+
           void
           start(const ModelView &view) override
           {
@@ -308,11 +312,11 @@ namespace masonry
         };
       } // namespace
 
-      std::unique_ptr<Postprocessor>
-      create_curve_tables()
-      {
-        return std::make_unique<CurveTables>();
-      }
     } // namespace postprocess
   }   // namespace brickwork
 } // namespace masonry
+
+MASONRY_REGISTER_WALLETTE_POSTPROCESSOR(
+  masonry::brickwork::postprocess::CurveTables,
+  "curve tables",
+  "curve.csv (one line per converged step: displacement in m, strain, force in N, stress in Pa, Newton iterations, largest joint damage, gauge strain, cycle, unloading, deleted cells, largest brick damages), cycles.csv and envelope.csv (cyclic protocol) and the curve's entries of summary.json (peak_stress in Pa, strain_at_peak, initial_modulus in Pa, final_stress, external_work in J, cycles).")

@@ -36,6 +36,10 @@ namespace masonry
         class Fields : public Postprocessor
         {
         public:
+          static void
+          declare_parameters(dealii::ParameterHandler &)
+          {}
+
           void
           output(const ModelView   &view,
                  const unsigned int step,
@@ -257,11 +261,11 @@ namespace masonry
         }
       } // namespace
 
-      std::unique_ptr<Postprocessor>
-      create_fields()
-      {
-        return std::make_unique<Fields>();
-      }
     } // namespace postprocess
   }   // namespace brickwork
 } // namespace masonry
+
+MASONRY_REGISTER_WALLETTE_POSTPROCESSOR(
+  masonry::brickwork::postprocess::Fields,
+  "fields",
+  "The brick fields every `Output interval' steps: displacement (m), cell stresses (Pa), MPI subdomain, the cell averages of the quantities the brick material reports and the deleted cells, as solution.pvd with solution_NNNN.pvtu/.vtu, or with `Output format = hdf5' as solution.xdmf with solution_NNNN.h5. A resumed run lists the steps of the whole run.")

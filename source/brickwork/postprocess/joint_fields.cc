@@ -29,6 +29,10 @@ namespace masonry
         class JointFields : public Postprocessor
         {
         public:
+          static void
+          declare_parameters(dealii::ParameterHandler &)
+          {}
+
           void
           output(const ModelView   &view,
                  const unsigned int step,
@@ -174,11 +178,11 @@ namespace masonry
         }
       } // namespace
 
-      std::unique_ptr<Postprocessor>
-      create_joint_fields()
-      {
-        return std::make_unique<JointFields>();
-      }
     } // namespace postprocess
   }   // namespace brickwork
 } // namespace masonry
+
+MASONRY_REGISTER_WALLETTE_POSTPROCESSOR(
+  masonry::brickwork::postprocess::JointFields,
+  "joint fields",
+  "The joints every `Output interval' steps: one quadrilateral per face pair with the quantities the interface law reports, the normal opening and the slip at its centre (m) and the joint type, as interfaces.pvd with interfaces_NNNN.vtu. A resumed run lists the steps of the whole run.")

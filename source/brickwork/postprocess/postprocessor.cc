@@ -10,16 +10,35 @@ namespace masonry
   {
     namespace postprocess
     {
-      std::unique_ptr<Postprocessor>
-      create_curve_tables();
-      std::unique_ptr<Postprocessor>
-      create_fields();
-      std::unique_ptr<Postprocessor>
-      create_joint_fields();
-      std::unique_ptr<Postprocessor>
-      create_curve_plot();
-      std::unique_ptr<Postprocessor>
-      create_calculix();
+      const char *
+      Postprocessor::default_plugin()
+      {
+        return "curve tables, fields, joint fields, curve plot";
+      }
+
+      std::string
+      Postprocessor::selection_documentation()
+      {
+        return "The outputs of the wallette analysis, run in the order of "
+               "the list (`curve tables' always runs first: the other "
+               "outputs and summary.json use its curve). `fields' and "
+               "`joint fields' run only with `Write VTU = true', `curve "
+               "plot' only with `Write plot = true'; `Write CalculiX input "
+               "= true' adds `calculix'. Postprocessors of an `Additional "
+               "shared libraries' file can be listed too.";
+      }
+
+      void
+      Postprocessor::declare_common_parameters(dealii::ParameterHandler &)
+      {}
+
+      void
+      Postprocessor::parse_common_parameters(dealii::ParameterHandler &)
+      {}
+
+      void
+      Postprocessor::parse_parameters(dealii::ParameterHandler &)
+      {}
 
       void
       Postprocessor::start(const ModelView &)
@@ -51,22 +70,6 @@ namespace masonry
       Postprocessor::load(const std::string &)
       {}
 
-      std::vector<std::unique_ptr<Postprocessor>>
-      create_postprocessors(const WalletteSettings &settings)
-      {
-        std::vector<std::unique_ptr<Postprocessor>> list;
-        list.push_back(create_curve_tables());
-        if (settings.output.write_vtu)
-          {
-            list.push_back(create_fields());
-            list.push_back(create_joint_fields());
-          }
-        if (settings.output.write_plot)
-          list.push_back(create_curve_plot());
-        if (settings.output.write_calculix)
-          list.push_back(create_calculix());
-        return list;
-      }
     } // namespace postprocess
   }   // namespace brickwork
 } // namespace masonry

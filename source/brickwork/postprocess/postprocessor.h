@@ -9,6 +9,7 @@
 #define masonry_brickwork_postprocess_postprocessor_h
 
 #include <masonry/core/json.h>
+#include <masonry/core/plugins.h>
 
 #include <memory>
 #include <string>
@@ -25,11 +26,41 @@ namespace masonry
       using model::ModelView;
       using model::System;
 
-      /** Base class of the wallette postprocessors. */
+      /**
+       * Base class of the wallette postprocessors, a plugin family with a
+       * list (`subsection Postprocess / subsection Wallette / set List of
+       * postprocessors`); the default list gives the outputs of earlier
+       * versions. A new output is one file: a class derived from this with
+       * a static declare_parameters() and one
+       * MASONRY_REGISTER_WALLETTE_POSTPROCESSOR line.
+       */
       class Postprocessor
       {
       public:
+        /** Parameters live in `subsection Postprocess/Wallette`. */
+        static constexpr const char *registry_section = "Postprocess/Wallette";
+        /** The selection entry: a list. */
+        static constexpr const char *registry_entry = "List of postprocessors";
+        /** Any number of postprocessors run at once. */
+        static constexpr bool multiple_selection = true;
+        /** Today's outputs: curve tables, fields, joint fields, curve plot. */
+        static const char *
+        default_plugin();
+        /** Help text of the selection entry. */
+        static std::string
+        selection_documentation();
+        /** Entries shared by all postprocessors: none. */
+        static void
+        declare_common_parameters(dealii::ParameterHandler &prm);
+
         virtual ~Postprocessor() = default;
+
+        /** Read the shared entries: none. */
+        virtual void
+        parse_common_parameters(dealii::ParameterHandler &prm);
+        /** Read this postprocessor's own subsection: nothing by default. */
+        virtual void
+        parse_parameters(dealii::ParameterHandler &prm);
 
         /** Before the first step of a run that starts from zero (the
          * curve holds the initial state). */
@@ -66,14 +97,15 @@ namespace masonry
         load(const std::string &data);
       };
 
-      /**
-       * The postprocessors of @p settings, in the order they run: curve
-       * tables, fields, joint fields, curve plot, CalculiX export.
-       */
-      std::vector<std::unique_ptr<Postprocessor>>
-      create_postprocessors(const WalletteSettings &settings);
     } // namespace postprocess
   }   // namespace brickwork
 } // namespace masonry
+
+/** Register a wallette postprocessor (one line in its .cc file). */
+#define MASONRY_REGISTER_WALLETTE_POSTPROCESSOR(classname, name, description) \
+  MASONRY_REGISTER_PLUGIN(masonry::brickwork::postprocess::Postprocessor,     \
+                          classname,                                          \
+                          name,                                               \
+                          description)
 
 #endif
