@@ -6,12 +6,17 @@
 #include <masonry/lp/interface.h>
 
 #include <coin/ClpSimplex.hpp>
+#include <coin/ClpSimplexOther.hpp>
 #include <coin/ClpSolve.hpp>
 #include <coin/CoinPackedMatrix.hpp>
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <fcntl.h>
 #include <memory>
+#include <mutex>
+#include <unistd.h>
 
 namespace masonry
 {
@@ -66,6 +71,41 @@ namespace masonry
             return false;
         return true;
       }
+
+      /**
+       * Clp's dual of @p model (ClpSimplexOther::dualOfModel), or nullptr
+       * if Clp declines. That function prints one line to the C stdout
+       * unconditionally; the descriptor is pointed at /dev/null meanwhile
+       * (under a mutex, since GA islands solve in parallel).
+       */
+      std::unique_ptr<ClpSimplex>
+      dual_of(ClpSimplex &model)
+      {
+        static std::mutex           mutex;
+        std::lock_guard<std::mutex> lock(mutex);
+        std::fflush(stdout);
+        const int saved = ::dup(STDOUT_FILENO);
+        const int null  = ::open("/dev/null", O_WRONLY);
+        if (saved >= 0 && null >= 0)
+          ::dup2(null, STDOUT_FILENO);
+        std::unique_ptr<ClpSimplex> dual;
+        try
+          {
+            dual.reset(static_cast<ClpSimplexOther &>(model).dualOfModel());
+          }
+        catch (const CoinError &)
+          {
+            // some bound patterns are beyond it: no dual
+          }
+        std::fflush(stdout);
+        if (saved >= 0 && null >= 0)
+          ::dup2(saved, STDOUT_FILENO);
+        if (null >= 0)
+          ::close(null);
+        if (saved >= 0)
+          ::close(saved);
+        return dual;
+      }
     } // namespace
 
     /**
@@ -90,7 +130,7 @@ namespace masonry
 
     private:
       /** Value of `Algorithm`. */
-      std::string algorithm = "dual simplex";
+      std::string algorithm = "automatic";
       /** Value of `Presolve`. */
       bool presolve = true;
 
@@ -98,9 +138,23 @@ namespace masonry
       std::unique_ptr<ClpSimplex>
       create(const LinearProgram &lp) const;
 
-      /** Run the chosen algorithm on @p model. */
+      /** Run @p method ("dual simplex", ...) on @p model. */
       void
-      run(ClpSimplex &model, const bool use_presolve) const;
+      run(ClpSimplex        &model,
+          const std::string &method,
+          const bool         use_presolve) const;
+
+      /**
+       * `automatic`: solve Clp's explicit dual of @p model (the static
+       * problem of the mechanism LP) with @p method, restore the primal and
+       * dual solutions into @p model and finish with the primal simplex
+       * from that basis (usually no iteration). Returns whether @p model is
+       * then proven optimal; otherwise the caller solves @p lp directly.
+       */
+      bool
+      solve_through_dual(ClpSimplex        &model,
+                         const std::string &method,
+                         unsigned int      &iterations) const;
     };
 
 
@@ -109,12 +163,20 @@ namespace masonry
     {
       prm.declare_entry(
         "Algorithm",
-        "dual simplex",
-        dealii::Patterns::Selection("dual simplex|primal simplex|barrier"),
-        "Algorithm of Clp: `dual simplex', `primal simplex', or `barrier' "
+        "automatic",
+        dealii::Patterns::Selection(
+          "automatic|dual simplex|primal simplex|barrier"),
+        "Algorithm of Clp: `dual simplex', `primal simplex', `barrier' "
         "(primal-dual interior point followed by crossover, so that the "
-        "solution is a vertex as with the simplex methods). Unitless "
-        "choice.");
+        "solution is a vertex as with the simplex methods), or `automatic': "
+        "Clp solves the explicit dual of the LP (for a mechanism LP, the "
+        "static problem in the contact forces), with the barrier when the "
+        "LP has more columns than rows (Mohr-Coulomb joints: the plastic "
+        "multipliers) and with the primal simplex otherwise (no tension "
+        "no sliding), then maps the solution back; if that does not end "
+        "proven optimal, it solves the LP directly (barrier, resp. dual "
+        "simplex). The choice comes from the measurements in "
+        "contrib/benchmarks/lp_solvers. Unitless choice.");
       prm.declare_entry("Presolve",
                         "true",
                         dealii::Patterns::Bool(),
@@ -177,12 +239,14 @@ namespace masonry
     }
 
     void
-    Clp::run(ClpSimplex &model, const bool use_presolve) const
+    Clp::run(ClpSimplex        &model,
+             const std::string &method,
+             const bool         use_presolve) const
     {
       ClpSolve options;
-      if (algorithm == "primal simplex")
+      if (method == "primal simplex")
         options.setSolveType(ClpSolve::usePrimal);
-      else if (algorithm == "barrier")
+      else if (method == "barrier")
         options.setSolveType(ClpSolve::useBarrier); // with crossover
       else
         options.setSolveType(ClpSolve::useDual);
@@ -191,25 +255,73 @@ namespace masonry
       model.initialSolve(options);
     }
 
+    bool
+    Clp::solve_through_dual(ClpSimplex        &model,
+                            const std::string &method,
+                            unsigned int      &iterations) const
+    {
+      try
+        {
+          std::unique_ptr<ClpSimplex> dual = dual_of(model);
+          if (!dual)
+            return false;
+          dual->setLogLevel(0);
+          dual->messageHandler()->setLogLevel(0);
+          if (time_limit() > 0)
+            dual->setMaximumSeconds(time_limit());
+          run(*dual, method, presolve);
+          iterations += dual->numberIterations();
+          if (!dual->isProvenOptimal())
+            return false;
+          static_cast<ClpSimplexOther &>(model).restoreFromDual(dual.get());
+          // clean up from the restored basis: a vertex of the original
+          // problem
+          model.primal(1);
+          iterations += model.numberIterations();
+          return model.isProvenOptimal();
+        }
+      catch (const CoinError &e)
+        {
+          // Clp's dualisation handles only some bound patterns: solve
+          // directly
+          return false;
+        }
+    }
+
     Solution
     Clp::solve(const LinearProgram &lp) const
     {
       const auto start_time = std::chrono::steady_clock::now();
       Solution   solution;
 
-      std::unique_ptr<ClpSimplex> model = create(lp);
-      run(*model, presolve);
-      solution.iterations = model->numberIterations();
-      if (!model->isProvenOptimal() && presolve &&
+      std::unique_ptr<ClpSimplex> model  = create(lp);
+      std::string                 method = algorithm;
+      bool                        done   = false;
+      if (algorithm == "automatic")
+        {
+          const bool many_columns = lp.n_columns() >= lp.n_rows();
+          done                    = solve_through_dual(*model,
+                                    many_columns ? "barrier" : "primal simplex",
+                                    solution.iterations);
+          method                  = many_columns ? "barrier" : "dual simplex";
+          if (!done)
+            model = create(lp);
+        }
+      if (!done)
+        {
+          run(*model, method, presolve);
+          solution.iterations += model->numberIterations();
+        }
+      if (!done && !model->isProvenOptimal() && presolve &&
           !model->hitMaximumIterations())
         {
           // confirm infeasibility/unboundedness (or recover from a failure)
           // on the original problem: presolve's verdicts are less reliable
           model = create(lp);
-          run(*model, false);
+          run(*model, method, false);
           solution.iterations += model->numberIterations();
         }
-      if (model->isProvenOptimal() && algorithm == "barrier" &&
+      if (!done && model->isProvenOptimal() && method == "barrier" &&
           !certificate_ok(lp, *model))
         {
           // the barrier maps infinite bounds to huge finite ones, so that an
@@ -287,5 +399,6 @@ namespace masonry
 
 MASONRY_REGISTER_LP_SOLVER(masonry::lp::Clp,
                            "clp",
-                           "COIN-OR Clp: dual or primal simplex, or barrier "
-                           "with crossover.")
+                           "COIN-OR Clp: dual or primal simplex, barrier "
+                           "with crossover, or automatic (the explicit dual "
+                           "problem by barrier or primal simplex).")
