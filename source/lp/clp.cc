@@ -169,13 +169,14 @@ namespace masonry
         "Algorithm of Clp: `dual simplex', `primal simplex', `barrier' "
         "(primal-dual interior point followed by crossover, so that the "
         "solution is a vertex as with the simplex methods), or `automatic': "
-        "Clp solves the explicit dual of the LP (for a mechanism LP, the "
-        "static problem in the contact forces), with the barrier when the "
-        "LP has more columns than rows (Mohr-Coulomb joints: the plastic "
-        "multipliers) and with the primal simplex otherwise (no tension "
-        "no sliding), then maps the solution back; if that does not end "
-        "proven optimal, it solves the LP directly (barrier, resp. dual "
-        "simplex). The choice comes from the measurements in "
+        "when the LP has at least as many columns as rows (Mohr-Coulomb "
+        "joints: the plastic multipliers), Clp solves the explicit dual of "
+        "the LP (for a mechanism LP, the static problem in the contact "
+        "forces) with the barrier, maps the vertex back and confirms it with "
+        "the primal simplex, else (or if that is not proven optimal: an "
+        "infeasible or unbounded LP) the barrier on the LP itself; with "
+        "fewer columns than rows (no tension no sliding) the dual simplex. "
+        "The choice comes from the measurements in "
         "contrib/benchmarks/lp_solvers. Unitless choice.");
       prm.declare_entry("Presolve",
                         "true",
@@ -299,13 +300,17 @@ namespace masonry
       bool                        done   = false;
       if (algorithm == "automatic")
         {
-          const bool many_columns = lp.n_columns() >= lp.n_rows();
-          done                    = solve_through_dual(*model,
-                                    many_columns ? "barrier" : "primal simplex",
-                                    solution.iterations);
-          method                  = many_columns ? "barrier" : "dual simplex";
-          if (!done)
-            model = create(lp);
+          // measured (contrib/benchmarks/lp_solvers): with more columns
+          // than rows (Mohr-Coulomb), the barrier on the dual LP; otherwise
+          // (no tension no sliding: many rows, few columns) the dual
+          // simplex on the LP itself
+          method = lp.n_columns() >= lp.n_rows() ? "barrier" : "dual simplex";
+          if (method == "barrier")
+            {
+              done = solve_through_dual(*model, method, solution.iterations);
+              if (!done)
+                model = create(lp);
+            }
         }
       if (!done)
         {
