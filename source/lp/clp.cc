@@ -106,6 +106,13 @@ namespace masonry
           ::close(saved);
         return dual;
       }
+
+      /** Clp's basis (status of every column, then of every row). */
+      struct ClpBasis : public WarmStartData
+      {
+        unsigned int               n_columns = 0, n_rows = 0;
+        std::vector<unsigned char> status;
+      };
     } // namespace
 
     /**
@@ -128,11 +135,29 @@ namespace masonry
       Solution
       solve(const LinearProgram &lp) const override;
 
+      /**
+       * Solve @p lp from the basis in @p warm (simplex from that basis, no
+       * presolve: the dual simplex unless `Algorithm = primal simplex'),
+       * and store the optimal basis there. Without a basis of the same
+       * shape, as solve().
+       */
+      Solution
+      solve_warm(const LinearProgram &lp, WarmStart &warm) const override;
+
     private:
       /** Value of `Algorithm`. */
       std::string algorithm = "automatic";
       /** Value of `Presolve`. */
       bool presolve = true;
+
+      /**
+       * solve() with an optional starting basis; on an optimal solve, the
+       * final basis goes to @p basis_out.
+       */
+      Solution
+      solve(const LinearProgram &lp,
+            const ClpBasis      *basis_in,
+            ClpBasis            *basis_out) const;
 
       /** A silent Clp model holding @p lp, with the time limit set. */
       std::unique_ptr<ClpSimplex>
@@ -292,13 +317,56 @@ namespace masonry
     Solution
     Clp::solve(const LinearProgram &lp) const
     {
+      return solve(lp, nullptr, nullptr);
+    }
+
+    Solution
+    Clp::solve_warm(const LinearProgram &lp, WarmStart &warm) const
+    {
+      const ClpBasis *in = dynamic_cast<const ClpBasis *>(warm.data.get());
+      if (in && (in->n_columns != lp.n_columns() || in->n_rows != lp.n_rows()))
+        in = nullptr;
+      auto     out      = std::make_unique<ClpBasis>();
+      Solution solution = solve(lp, in, out.get());
+      if (in)
+        ++warm.n_warm;
+      if (solution.status == Status::optimal)
+        warm.data = std::move(out);
+      return solution;
+    }
+
+    Solution
+    Clp::solve(const LinearProgram &lp,
+               const ClpBasis      *basis_in,
+               ClpBasis            *basis_out) const
+    {
       const auto start_time = std::chrono::steady_clock::now();
       Solution   solution;
 
       std::unique_ptr<ClpSimplex> model  = create(lp);
       std::string                 method = algorithm;
       bool                        done   = false;
-      if (algorithm == "automatic")
+      bool                        warm   = false;
+      if (basis_in)
+        {
+          // a simplex from the stored basis, without presolve (which would
+          // drop it); its verdict is then handled as a cold one's
+          model->copyinStatus(basis_in->status.data());
+          if (algorithm == "primal simplex")
+            model->primal(0);
+          else
+            model->dual(0);
+          solution.iterations += model->numberIterations();
+          method =
+            algorithm == "primal simplex" ? "primal simplex" : "dual simplex";
+          warm = true;
+          done = model->isProvenOptimal() ||
+                 model->isProvenPrimalInfeasible() ||
+                 model->isProvenDualInfeasible();
+          if (!done)
+            model = create(lp);
+        }
+      if (!warm && algorithm == "automatic")
         {
           // measured (contrib/benchmarks/lp_solvers): with more columns
           // than rows (Mohr-Coulomb), the barrier on the dual LP; otherwise
@@ -358,6 +426,13 @@ namespace masonry
                                     model->dualRowSolution() + m);
           solution.objective = lp.objective_value(solution.x);
           solution.message   = "Clp: optimal";
+          if (basis_out)
+            {
+              basis_out->n_columns = n;
+              basis_out->n_rows    = m;
+              basis_out->status.assign(model->statusArray(),
+                                       model->statusArray() + n + m);
+            }
         }
       else if (model->isProvenPrimalInfeasible())
         {
