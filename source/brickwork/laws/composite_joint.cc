@@ -145,6 +145,50 @@ namespace masonry
           {E_b * E_m / (h_m * (E_b - E_m)), G_b * G_m / (h_m * (G_b - G_m))}};
       }
 
+      CompositeJointState
+      CompositeJoint::extrapolate(const CompositeJointState &old,
+                                  const CompositeJointState &older,
+                                  const double               ratio) const
+      {
+        CompositeJointState e = old;
+        for (unsigned int i = 0; i < 3; ++i)
+          e.plastic_jump[i] +=
+            ratio * (old.plastic_jump[i] - older.plastic_jump[i]);
+        e.crack_opening =
+          std::max(old.crack_opening +
+                     ratio * (old.crack_opening - older.crack_opening),
+                   0.);
+        e.xi = std::max(old.xi + ratio * (old.xi - older.xi), old.xi);
+        e.kappa_cap =
+          std::max(old.kappa_cap + ratio * (old.kappa_cap - older.kappa_cap),
+                   old.kappa_cap);
+        return e;
+      }
+
+      void
+      CompositeJoint::evaluate_frozen(const Vector3             &u,
+                                      const CompositeJointState &frozen,
+                                      Vector3                   &t,
+                                      Matrix3                   &D) const
+      {
+        const double kn = p.normal_stiffness, ks = p.shear_stiffness;
+        for (auto &row : D)
+          row.fill(0.);
+        double up_n = frozen.plastic_jump[0];
+        D[0][0]     = kn;
+        if (p.crack_closure && frozen.crack_opening > 0 && u[0] < up_n)
+          {
+            // close the crack first, without traction
+            up_n = std::max(up_n - frozen.crack_opening, u[0]);
+            if (u[0] >= up_n)
+              D[0][0] = 0;
+          }
+        t[0]    = kn * (u[0] - up_n);
+        t[1]    = ks * (u[1] - frozen.plastic_jump[1]);
+        t[2]    = ks * (u[2] - frozen.plastic_jump[2]);
+        D[1][1] = D[2][2] = ks;
+      }
+
       double
       CompositeJoint::cap_yield(const double k) const
       {

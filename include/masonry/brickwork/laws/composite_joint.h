@@ -199,6 +199,31 @@ namespace masonry
                  Matrix3                   &tangent,
                  CompositeJointActive      *active = nullptr) const;
 
+        /**
+         * IMPL-EX (Oliver, Huespe & Cante 2008), as the brick law does it:
+         * the state extrapolated linearly in pseudo-time from the two last
+         * converged states, @p old + @p ratio (@p old - @p older), with the
+         * crack opening, xi and kappa_3 kept from decreasing below @p old
+         * and the crack opening kept >= 0.
+         */
+        CompositeJointState
+        extrapolate(const CompositeJointState &old,
+                    const CompositeJointState &older,
+                    const double               ratio) const;
+
+        /**
+         * Traction and tangent with the plastic jump of @p frozen held
+         * fixed (the IMPL-EX step): t = diag(k_n, k_s, k_s) (u - u_p),
+         * tangent diag(k_n, k_s, k_s); an open crack (crack_opening > 0)
+         * pushed into compression closes without traction first, as in
+         * evaluate(). Nothing is updated.
+         */
+        void
+        evaluate_frozen(const Vector3             &jump,
+                        const CompositeJointState &frozen,
+                        Vector3                   &t,
+                        Matrix3                   &tangent) const;
+
         /** Cap yield value sbar(kappa_3), Pa. */
         double
         cap_yield(const double kappa) const;
