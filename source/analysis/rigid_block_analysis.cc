@@ -476,14 +476,16 @@ namespace masonry
     lp::Solution
     RigidBlockAnalysis::solve(const lp::LinearProgram &lp,
                               RunContext              &context,
-                              const std::string       &mps_name)
+                              const std::string       &mps_name,
+                              lp::WarmStart           *warm)
     {
       if (!quiet && solver->export_mps() &&
           dealii::Utilities::MPI::this_mpi_process(context.mpi_communicator) ==
             0)
         lp.write_mps(context.output.file(mps_name));
-      const auto         start    = std::chrono::steady_clock::now();
-      const lp::Solution solution = solver->solve(lp);
+      const auto         start = std::chrono::steady_clock::now();
+      const lp::Solution solution =
+        warm ? solver->solve_warm(lp, *warm) : solver->solve(lp);
       seconds_solve +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
           .count();
