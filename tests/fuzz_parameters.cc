@@ -127,11 +127,12 @@ main(int argc, char **argv)
   const double total =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
       .count();
-  std::cerr << "fuzz: " << cases.size() << " files, " << n_runs
-            << " real runs, " << n_errors << " clean errors, " << n_results
-            << " results, " << n_bad << " bad; " << total
-            << " s in total, slowest " << slowest_name << " " << slowest
-            << " s\n";
+  // timings are not deterministic: in a file, not in the compared output
+  std::ofstream("../fuzz-summary.txt")
+    << "fuzz: " << cases.size() << " files, " << n_runs << " real runs, "
+    << n_errors << " clean errors, " << n_results << " results, " << n_bad
+    << " bad; " << total << " s in total, slowest " << slowest_name << " "
+    << slowest << " s\n";
   std::cout << "files: " << cases.size() << " (" << n_runs << " real runs)\n"
             << "outcomes that are neither a finite result nor a one-line "
                "error naming an entry: "

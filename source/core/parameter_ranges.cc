@@ -79,7 +79,8 @@ namespace masonry
          3,
          ";"},
         // brickwork
-        {"Brick material/Damage plasticity/Young's modulus", 0, 1e12, "Pa"},
+        // up to 1e15 Pa: practically rigid bricks (used by the checks)
+        {"Brick material/Damage plasticity/Young's modulus", 0, 1e15, "Pa"},
         {"Brick material/Damage plasticity/Compressive strength", 0, 1e9, "Pa"},
         {"Brick material/Damage plasticity/Tensile strength", 0, 1e9, "Pa"},
         {"Brick material/Damage plasticity/Compressive fracture energy",
@@ -95,7 +96,7 @@ namespace masonry
          1,
          "(dimensionless)"},
         {"Brick material/Damage plasticity/Viscosity", 0, 1e6, "s"},
-        {"Brick material/Elastic/Young's modulus", 0, 1e12, "Pa"},
+        {"Brick material/Elastic/Young's modulus", 0, 1e15, "Pa"},
         {"Interface law/Normal stiffness", 0, 1e16, "Pa/m"},
         {"Interface law/Shear stiffness", 0, 1e16, "Pa/m"},
         {"Interface law/Viscosity", 0, 1e6, "s"},
@@ -445,6 +446,46 @@ namespace masonry
           }
         catch (...)
           {}
+
+    // combinations that make a degenerate wallette: the english bond lays
+    // headers across the wall, so a header (length + joint) must match two
+    // stretcher widths (width + joint)
+    try
+      {
+        if (get(prm, "Analysis") == "wallette" &&
+            get(prm, "Bond/Pattern") == "english")
+          {
+            auto value = [&](const std::string &path) {
+              return dealii::Utilities::string_to_double(get(prm, path));
+            };
+            const double joint  = value("Wallette/Joint thickness");
+            const double length = value("Wallette/Brick length") + joint;
+            const double width  = value("Wallette/Brick width") + joint;
+            std::string  blame  = "Wallette/Brick width";
+            for (const char *e : {"Wallette/Brick width",
+                                  "Wallette/Brick length",
+                                  "Wallette/Joint thickness"})
+              if (parameter_is_set(e))
+                {
+                  blame = e;
+                  break;
+                }
+            AssertThrow(std::abs(length - 2 * width) <= 1e-9 * length,
+                        dealii::ExcMessage(
+                          parameter_location(blame) + ": entry '" + blame +
+                          "': the english bond needs brick length + joint = "
+                          "2 x (brick width + joint); got " +
+                          number(length) + " m and 2 x " + number(width) +
+                          " m (set Brick length, Brick width and Joint "
+                          "thickness to match)"));
+          }
+      }
+    catch (const dealii::ExcMessage &)
+      {
+        throw;
+      }
+    catch (...)
+      {}
 
     check_function(prm, "Geometry model", "Thickness", 1, size, 100, "m", true);
     for (const std::string analysis :
