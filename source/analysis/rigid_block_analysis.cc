@@ -1,11 +1,12 @@
 #include <masonry/adaptation/optimiser.h>
 #include <masonry/analysis/rigid_block_analysis.h>
-#include <masonry/config.h>
 #include <masonry/core/json.h>
 #include <masonry/core/output_directory.h>
 #include <masonry/core/parameters.h>
+#include <masonry/core/scripts.h>
 #include <masonry/geometry/interface.h>
 #include <masonry/rigid_blocks/interface_model.h>
+#include <masonry/rigid_blocks/postprocess/interface.h>
 
 #include <deal.II/base/utilities.h>
 
@@ -53,21 +54,42 @@ namespace masonry
     }
 
     void
+    RigidBlockAnalysis::write_results(
+      const rigid_blocks::Motion               &motion,
+      const rigid_blocks::SupportMotion        &support_motion,
+      const bool                                supports_move,
+      const std::vector<std::array<double, 3>> &forces,
+      RunContext                               &context) const
+    {
+      const auto start = std::chrono::steady_clock::now();
+      const rigid_blocks::postprocess::Result result(*model,
+                                                     motion,
+                                                     support_motion,
+                                                     forces,
+                                                     output_options,
+                                                     supports_move,
+                                                     context.mpi_communicator);
+      for (const auto &[name, postprocessor] : postprocessors)
+        postprocessor->execute(result, context);
+      // what writing the results costs (not part of the analysis' timings)
+      context.summary["seconds_output"] =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+          .count();
+    }
+
+    void
     RigidBlockAnalysis::write_mechanism(
       const rigid_blocks::Motion               &motion,
       const std::vector<std::array<double, 3>> &forces,
       RunContext                               &context) const
     {
-      record_support_reactions(forces, context);
-      write_thrust_line(forces, context);
-      rigid_blocks::write_results(
-        *model,
+      write_results(
         motion,
         [](const dealii::Point<3> &, const std::string &) {
           return dealii::Tensor<1, 3>();
         },
+        false,
         forces,
-        output_options,
         context);
     }
 
@@ -182,6 +204,8 @@ namespace masonry
       joints = plugins::Registry<rigid_blocks::InterfaceModel>::create(prm);
       joints_name =
         plugins::Registry<rigid_blocks::InterfaceModel>::selected(prm);
+      postprocessors = plugins::Registry<
+        rigid_blocks::postprocess::Interface>::create_selected(prm);
       optimiser      = plugins::Registry<adaptation::Optimiser>::create(prm);
       optimiser_name = plugins::Registry<adaptation::Optimiser>::selected(prm);
       if (optimiser->active())
@@ -423,17 +447,16 @@ namespace masonry
       }
       if (output_options.write_picture)
         {
-          const std::string script = std::string(MASONRY_SOURCE_DIR) +
-                                     "/contrib/plot/adaptation_plot.py";
+          const std::string script  = find_script("adaptation_plot.py");
           const std::string dir     = context.output.path();
           const std::string command = "/usr/bin/python3 '" + script + "' '" +
                                       dir + "adaptation.csv' '" + dir +
                                       "adaptation.png' >/dev/null 2>&1";
-          if (std::system(command.c_str()) == 0)
+          if (!script.empty() && std::system(command.c_str()) == 0)
             context.output.file("adaptation.png");
           else
-            pcout << "Note: adaptation.png not written (" << script
-                  << " with /usr/bin/python3 and matplotlib)\n";
+            pcout << "Note: adaptation.png not written (adaptation_plot.py "
+                     "with /usr/bin/python3 and matplotlib)\n";
         }
     }
 
@@ -539,87 +562,6 @@ namespace masonry
       summary["seconds_solve"]    = seconds_solve;
       if (solution.status == lp::Status::optimal)
         summary["lp_max_violation"] = check_solution(lp, solution, context);
-    }
-
-    void
-    RigidBlockAnalysis::record_support_reactions(
-      const std::vector<std::array<double, 3>> &forces,
-      RunContext                               &context) const
-    {
-      std::map<std::string, dealii::Tensor<1, 3>> reactions;
-      unsigned int                                p = 0;
-      for (const auto &i : model->interfaces())
-        for (const auto &c : i.points)
-          {
-            if (i.second == rigid_blocks::Interface::support &&
-                p < forces.size())
-              // the force on block `first` is −(F_n n + F_a a + F_l l),
-              // n pointing from the block into the ground
-              reactions[i.support_label] -= forces[p][0] * c.normal +
-                                            forces[p][1] * c.across +
-                                            forces[p][2] * c.along;
-            ++p;
-          }
-      Json json = Json::object();
-      for (const auto &[label, r] : reactions)
-        {
-          Json v = Json::array();
-          for (unsigned int d = 0; d < 3; ++d)
-            v.push_back(r[d]);
-          json[label] = v;
-        }
-      context.summary["support_reactions"] = json;
-    }
-
-    void
-    RigidBlockAnalysis::write_thrust_line(
-      const std::vector<std::array<double, 3>> &forces,
-      RunContext                               &context) const
-    {
-      if (dealii::Utilities::MPI::this_mpi_process(context.mpi_communicator) !=
-          0)
-        return;
-      std::ofstream csv(context.output.file("thrust_line.csv"));
-      csv << "# line of thrust: per interface the centre of pressure of the "
-             "normal contact forces (m), the resultant normal force N and "
-             "shear forces (N, from the LP dual), the eccentricity e (m) of "
-             "the centre of pressure across the thickness (towards the "
-             "extrados positive) and e/(t/2)\n";
-      csv << "interface,first_block,second_block,x,y,z,normal_force,"
-             "shear_across,shear_along,eccentricity,eccentricity_ratio\n";
-      csv << std::setprecision(10);
-      unsigned int p          = 0;
-      const auto  &interfaces = model->interfaces();
-      for (unsigned int k = 0; k < interfaces.size(); ++k)
-        {
-          const auto          &i = interfaces[k];
-          double               n = 0, sa = 0, sl = 0, half = 0;
-          dealii::Tensor<1, 3> moment;
-          for (const auto &c : i.points)
-            {
-              if (p < forces.size())
-                {
-                  n += forces[p][0];
-                  sa += forces[p][1];
-                  sl += forces[p][2];
-                  moment += forces[p][0] * (c.position - i.centre);
-                }
-              half =
-                std::max(half, std::abs((c.position - i.centre) * c.across));
-              ++p;
-            }
-          if (std::abs(n) < 1e-12 * (std::abs(sa) + std::abs(sl) + 1e-300))
-            continue;
-          const dealii::Point<3> x = i.centre + moment / n;
-          const double           e = (x - i.centre) * i.points.front().across;
-          csv << k << "," << i.first << ","
-              << (i.second == rigid_blocks::Interface::support ?
-                    std::string("support") :
-                    std::to_string(i.second))
-              << "," << x[0] << "," << x[1] << "," << x[2] << "," << n << ","
-              << sa << "," << sl << "," << e << ","
-              << (half > 0 ? e / half : 0.) << "\n";
-        }
     }
 
     unsigned int

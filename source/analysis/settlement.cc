@@ -163,14 +163,13 @@ namespace masonry
 
         const auto forces =
           rigid_blocks::contact_forces(solution, force_scale, true);
-        record_support_reactions(forces, context);
-        rigid_blocks::write_results(*model,
-                                    rigid_blocks::motion_from_solution(
-                                      problem, solution.x, settlement_scale),
-                                    u0,
-                                    forces,
-                                    output_options,
-                                    context);
+        write_results(rigid_blocks::motion_from_solution(problem,
+                                                         solution.x,
+                                                         settlement_scale),
+                      u0,
+                      true,
+                      forces,
+                      context);
       }
 
     private:

@@ -1,4 +1,7 @@
+#include <masonry/core/parameters.h>
 #include <masonry/core/plugins.h>
+
+#include <deal.II/base/utilities.h>
 
 #include <map>
 
@@ -22,6 +25,28 @@ namespace masonry
         return paths;
       }
     } // namespace
+
+    namespace internal
+    {
+      std::vector<std::string>
+      split_list(const std::string &text)
+      {
+        std::vector<std::string> names;
+        for (const auto &name : dealii::Utilities::split_string_list(text, ','))
+          if (!name.empty())
+            names.push_back(name);
+        return names;
+      }
+
+      void
+      throw_parameter_error(const std::string &section,
+                            const std::string &entry,
+                            const std::string &message)
+      {
+        ParsePathScope scope(section);
+        AssertThrow(false, ExcParameter(entry, message));
+      }
+    } // namespace internal
 
     std::string
     section_name(const std::string &plugin_name)

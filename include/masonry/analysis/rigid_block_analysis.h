@@ -26,6 +26,10 @@ namespace masonry
   {
     class InterfaceModel;
     struct MechanismProblem;
+    namespace postprocess
+    {
+      class Interface;
+    }
   } // namespace rigid_blocks
   namespace adaptation
   {
@@ -144,25 +148,6 @@ namespace masonry
              RunContext              &context) const;
 
       /**
-       * Sum of the contact forces (N, global frame) on every support label
-       * from contact forces as returned by rigid_blocks::contact_forces():
-       * the reaction of the ground on the vault, as summary entries
-       * `support_reactions` {label: [Rx, Ry, Rz]}.
-       */
-      void
-      record_support_reactions(const std::vector<std::array<double, 3>> &forces,
-                               RunContext &context) const;
-
-      /**
-       * The line of thrust: for every interface the centre of pressure of
-       * its normal contact forces, the resultant normal and shear forces and
-       * the eccentricity across the thickness, into thrust_line.csv.
-       */
-      void
-      write_thrust_line(const std::vector<std::array<double, 3>> &forces,
-                        RunContext &context) const;
-
-      /**
        * The block of patch @p patch whose cell contains the parameter point
        * @p uv (the first one if @p uv is on a cell edge).
        */
@@ -187,8 +172,22 @@ namespace masonry
       centimetre_scale(const std::vector<double> &x) const;
 
       /**
-       * Write the results of a mechanism with fixed supports: reactions,
-       * line of thrust, crack list and VTU/PNG.
+       * Run the postprocessors of `Postprocess/Rigid blocks/List of
+       * postprocessors` on the result: the block motion, the support motion
+       * (@p supports_move: prescribed, as in a settlement analysis) and the
+       * contact forces (N per contact point, as returned by
+       * rigid_blocks::contact_forces()). Records `seconds_output`.
+       */
+      void
+      write_results(const rigid_blocks::Motion               &motion,
+                    const rigid_blocks::SupportMotion        &support_motion,
+                    const bool                                supports_move,
+                    const std::vector<std::array<double, 3>> &forces,
+                    RunContext                               &context) const;
+
+      /**
+       * Write the results of a mechanism with fixed supports: write_results()
+       * with a zero support motion.
        */
       void
       write_mechanism(const rigid_blocks::Motion               &motion,
@@ -234,6 +233,11 @@ namespace masonry
       dealii::FunctionParser<3> surface_load{1};
       /** Output options. */
       rigid_blocks::OutputOptions output_options;
+      /** The listed postprocessors, in the order they run. */
+      std::vector<
+        std::pair<std::string,
+                  std::unique_ptr<rigid_blocks::postprocess::Interface>>>
+        postprocessors;
       /** The geometry. */
       std::unique_ptr<geometry::Interface> geometry;
       /** The LP solver. */

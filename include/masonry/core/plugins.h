@@ -38,6 +38,26 @@
  * its first letter capitalised (`subsection Barrel vault`), in which the
  * plugin declares its own entries. Only the selected plugin is created and
  * parsed, so a run pays nothing for the plugins it does not use.
+ *
+ * <h3>Families with a list of plugins</h3>
+ *
+ * A family of which a run uses any number of plugins at once (outputs, like
+ * ASPECT's `List of postprocessors`) says so in its interface:
+ *
+ * @code
+ *   static constexpr bool multiple_selection = true;
+ *   static const char *default_plugin(); // "a, b, c": the default list
+ *   // optional: plugins that must run before this one
+ *   virtual std::vector<std::string> required_plugins() const;
+ * @endcode
+ *
+ * Its selection entry is then a comma-separated list (a
+ * Patterns::MultipleSelection of the registered names; an empty list selects
+ * none), and create_selected() creates and parses every listed plugin, in
+ * the order of the list, after the plugins each one requires (added if the
+ * list does not name them). Names in the default list that are not
+ * registered are left out of the default. Plugins of an `Additional shared
+ * libraries` file register like the built-in ones and can be listed.
  */
 #ifndef masonry_core_plugins_h
 #define masonry_core_plugins_h
@@ -49,6 +69,8 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace masonry
@@ -109,6 +131,46 @@ namespace masonry
     /** All subsystems, sorted by section name (deterministic output). */
     std::vector<Subsystem>
     subsystems();
+
+    namespace internal
+    {
+      /** Whether @p Interface declares `multiple_selection = true`. */
+      template <class Interface, class = void>
+      struct IsMultiple : std::false_type
+      {};
+
+      template <class Interface>
+      struct IsMultiple<Interface,
+                        std::void_t<decltype(Interface::multiple_selection)>>
+        : std::integral_constant<bool, Interface::multiple_selection>
+      {};
+
+      /** Whether @p Interface has `required_plugins() const`. */
+      template <class Interface, class = void>
+      struct HasRequired : std::false_type
+      {};
+
+      template <class Interface>
+      struct HasRequired<Interface,
+                         std::void_t<decltype(std::declval<const Interface &>()
+                                                .required_plugins())>>
+        : std::true_type
+      {};
+
+      /** Split a comma-separated list, dropping blanks around names. */
+      std::vector<std::string>
+      split_list(const std::string &text);
+
+      /**
+       * Throw masonry::ExcParameter for @p entry (in @p section) with
+       * @p message (out of line: keeps parameters.h out of this header);
+       * never returns.
+       */
+      void
+      throw_parameter_error(const std::string &section,
+                            const std::string &entry,
+                            const std::string &message);
+    } // namespace internal
 
     /**
      * The list of plugins implementing @p Interface.
@@ -195,14 +257,33 @@ namespace masonry
         const auto &list = storage();
         // the interface's default, or the first plugin while that one is
         // not registered (e.g. a build without it)
-        std::string default_name = list.front().name;
-        for (const auto &e : list)
-          if (e.name == Interface::default_plugin())
-            default_name = e.name;
-        prm.declare_entry(Interface::registry_entry,
-                          default_name,
-                          dealii::Patterns::Selection(pattern()),
-                          documentation(Interface::selection_documentation()));
+        if constexpr (internal::IsMultiple<Interface>::value)
+          {
+            // the default list without names that are not registered
+            std::string default_list;
+            for (const auto &name :
+                 internal::split_list(Interface::default_plugin()))
+              for (const auto &e : list)
+                if (e.name == name)
+                  default_list += (default_list.empty() ? "" : ", ") + name;
+            prm.declare_entry(Interface::registry_entry,
+                              default_list,
+                              dealii::Patterns::MultipleSelection(pattern()),
+                              documentation(
+                                Interface::selection_documentation()));
+          }
+        else
+          {
+            std::string default_name = list.front().name;
+            for (const auto &e : list)
+              if (e.name == Interface::default_plugin())
+                default_name = e.name;
+            prm.declare_entry(Interface::registry_entry,
+                              default_name,
+                              dealii::Patterns::Selection(pattern()),
+                              documentation(
+                                Interface::selection_documentation()));
+          }
         Interface::declare_common_parameters(prm);
         for (const auto &e : list)
           {
@@ -225,12 +306,86 @@ namespace masonry
       }
 
       /**
+       * A family with a list of plugins: the names listed in @p prm, in
+       * their order (a name listed twice is an error naming the entry).
+       */
+      static std::vector<std::string>
+      selected_list(dealii::ParameterHandler &prm)
+      {
+        static_assert(internal::IsMultiple<Interface>::value,
+                      "selected_list() is for families with a list");
+        const std::vector<std::string> names =
+          internal::split_list(selected(prm));
+        for (unsigned int i = 0; i < names.size(); ++i)
+          for (unsigned int j = 0; j < i; ++j)
+            if (names[i] == names[j])
+              internal::throw_parameter_error(Interface::registry_section,
+                                              Interface::registry_entry,
+                                              "'" + names[i] +
+                                                "' is listed twice");
+        return names;
+      }
+
+      /**
+       * A family with a list of plugins: create every plugin listed in
+       * @p prm and let each parse its subsection. Each comes after the
+       * plugins its required_plugins() names (created too if not listed);
+       * otherwise the order is that of the list. Unlisted plugins are not
+       * created.
+       */
+      static std::vector<std::pair<std::string, std::unique_ptr<Interface>>>
+      create_selected(dealii::ParameterHandler &prm)
+      {
+        std::vector<std::pair<std::string, std::unique_ptr<Interface>>> result;
+        std::vector<std::string> in_progress;
+        std::function<void(const std::string &, const std::string &)> visit =
+          [&](const std::string &name, const std::string &required_by) {
+            for (const auto &r : result)
+              if (r.first == name)
+                return;
+            for (const auto &p : in_progress)
+              AssertThrow(p != name,
+                          dealii::ExcMessage(
+                            "The plugins required by '" + name + "' for '" +
+                            Interface::registry_entry + "' form a cycle."));
+            if (!required_by.empty() && !is_registered(name))
+              internal::throw_parameter_error(Interface::registry_section,
+                                              Interface::registry_entry,
+                                              "'" + required_by +
+                                                "' requires '" + name +
+                                                "', which is not registered");
+            in_progress.push_back(name);
+            std::unique_ptr<Interface> plugin = create(prm, name);
+            if constexpr (internal::HasRequired<Interface>::value)
+              for (const std::string &r : plugin->required_plugins())
+                visit(r, name);
+            in_progress.pop_back();
+            result.emplace_back(name, std::move(plugin));
+          };
+        for (const auto &name : selected_list(prm))
+          visit(name, "");
+        return result;
+      }
+
+      /** Whether a plugin called @p name is registered. */
+      static bool
+      is_registered(const std::string &name)
+      {
+        for (const auto &e : storage())
+          if (e.name == name)
+            return true;
+        return false;
+      }
+
+      /**
        * Create the plugin selected in @p prm and let it parse its own
        * subsection.
        */
       static std::unique_ptr<Interface>
       create(dealii::ParameterHandler &prm)
       {
+        static_assert(!internal::IsMultiple<Interface>::value,
+                      "a family with a list: use create_selected()");
         return create(prm, selected(prm));
       }
 

@@ -1,12 +1,12 @@
 /**
  * @file
- * Results of rigid-block analyses: crack list, interface forces, VTU/PVD
- * files and a picture.
+ * The motion of rigid blocks, surface loads on them and the output options
+ * of the rigid-block analyses (the outputs themselves are postprocessors:
+ * rigid_blocks/postprocess/interface.h).
  */
 #ifndef masonry_rigid_blocks_output_h
 #define masonry_rigid_blocks_output_h
 
-#include <masonry/core/run_context.h>
 #include <masonry/rigid_blocks/block_model.h>
 
 #include <deal.II/base/function.h>
@@ -17,6 +17,11 @@ namespace masonry
 {
   namespace rigid_blocks
   {
+    /** Motion of the ground at a support point with an edge label, m. */
+    using SupportMotion =
+      std::function<dealii::Tensor<1, 3>(const dealii::Point<3> &,
+                                         const std::string &)>;
+
     /** Rigid motion of every block: translation of the centroid (m) and
      * rotation (rad). */
     struct Motion
@@ -59,25 +64,6 @@ namespace masonry
                            std::vector<dealii::Tensor<1, 3>> &force,
                            std::vector<dealii::Tensor<1, 3>> &moment);
 
-    /**
-     * Write the results of a solved rigid-block problem: the crack list
-     * into the summary, interface_forces.csv (@p forces: per contact point
-     * normal, across and along forces, N, compression positive),
-     * blocks.csv (centroid, translation and rotation of every block, full
-     * precision), blocks.vtu, interfaces.vtu, vault.pvd and vault.png.
-     * @p settlement gives the ground motion at a support point with a
-     * label.
-     */
-    void
-    write_results(
-      const BlockModel &model,
-      const Motion     &motion,
-      const std::function<dealii::Tensor<1, 3>(const dealii::Point<3> &,
-                                               const std::string &)>
-                                               &settlement,
-      const std::vector<std::array<double, 3>> &forces,
-      const OutputOptions                      &options,
-      RunContext                               &context);
   } // namespace rigid_blocks
 } // namespace masonry
 
