@@ -64,7 +64,7 @@ namespace lp_test
       {
         const std::string p = presolve ? "presolve" : "no presolve";
         for (const std::string a :
-             {"dual simplex", "primal simplex", "barrier"})
+             {"automatic", "dual simplex", "primal simplex", "barrier"})
           configs.push_back({"clp (" + a + ", " + p + ")",
                              create("clp", "Algorithm", a, presolve)});
         for (const std::string m : {"dual simplex", "primal simplex"})

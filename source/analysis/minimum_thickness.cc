@@ -220,7 +220,9 @@ namespace masonry
       stands(const double s, RunContext &context)
       {
         assemble(s);
-        last_solution = solve(last_problem->lp, context);
+        // the bisection's LPs share their shape: each starts from the
+        // basis of the last one that stood
+        last_solution = solve(last_problem->lp, context, "lp.mps", &warm);
         AssertThrow(last_solution.status != lp::Status::infeasible,
                     dealii::ExcMessage(
                       "the LP of a vault at rest is infeasible, which "
@@ -269,6 +271,7 @@ namespace masonry
       double                                          smallest_factor = 1e-3;
       std::unique_ptr<rigid_blocks::MechanismProblem> last_problem;
       lp::Solution                                    last_solution;
+      lp::WarmStart                                   warm;
       double                                          last_force_scale = 1;
     };
   } // namespace analysis

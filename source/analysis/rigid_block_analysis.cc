@@ -495,7 +495,8 @@ namespace masonry
     lp::Solution
     RigidBlockAnalysis::solve(const lp::LinearProgram &lp,
                               RunContext              &context,
-                              const std::string       &mps_name)
+                              const std::string       &mps_name,
+                              lp::WarmStart           *warm)
     {
       if (!quiet && solver->export_mps() &&
           dealii::Utilities::MPI::this_mpi_process(context.mpi_communicator) ==
@@ -511,8 +512,9 @@ namespace masonry
                << " M non-zeros: this may take minutes\n";
           context.pcout << line.str();
         }
-      const auto         start    = std::chrono::steady_clock::now();
-      const lp::Solution solution = solver->solve(lp);
+      const auto         start = std::chrono::steady_clock::now();
+      const lp::Solution solution =
+        warm ? solver->solve_warm(lp, *warm) : solver->solve(lp);
       seconds_solve +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
           .count();

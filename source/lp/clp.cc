@@ -6,12 +6,17 @@
 #include <masonry/lp/interface.h>
 
 #include <coin/ClpSimplex.hpp>
+#include <coin/ClpSimplexOther.hpp>
 #include <coin/ClpSolve.hpp>
 #include <coin/CoinPackedMatrix.hpp>
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <fcntl.h>
 #include <memory>
+#include <mutex>
+#include <unistd.h>
 
 namespace masonry
 {
@@ -66,6 +71,48 @@ namespace masonry
             return false;
         return true;
       }
+
+      /**
+       * Clp's dual of @p model (ClpSimplexOther::dualOfModel), or nullptr
+       * if Clp declines. That function prints one line to the C stdout
+       * unconditionally; the descriptor is pointed at /dev/null meanwhile
+       * (under a mutex, since GA islands solve in parallel).
+       */
+      std::unique_ptr<ClpSimplex>
+      dual_of(ClpSimplex &model)
+      {
+        static std::mutex           mutex;
+        std::lock_guard<std::mutex> lock(mutex);
+        std::fflush(stdout);
+        const int saved = ::dup(STDOUT_FILENO);
+        const int null  = ::open("/dev/null", O_WRONLY);
+        if (saved >= 0 && null >= 0)
+          ::dup2(null, STDOUT_FILENO);
+        std::unique_ptr<ClpSimplex> dual;
+        try
+          {
+            dual.reset(static_cast<ClpSimplexOther &>(model).dualOfModel());
+          }
+        catch (const CoinError &)
+          {
+            // some bound patterns are beyond it: no dual
+          }
+        std::fflush(stdout);
+        if (saved >= 0 && null >= 0)
+          ::dup2(saved, STDOUT_FILENO);
+        if (null >= 0)
+          ::close(null);
+        if (saved >= 0)
+          ::close(saved);
+        return dual;
+      }
+
+      /** Clp's basis (status of every column, then of every row). */
+      struct ClpBasis : public WarmStartData
+      {
+        unsigned int               n_columns = 0, n_rows = 0;
+        std::vector<unsigned char> status;
+      };
     } // namespace
 
     /**
@@ -88,19 +135,51 @@ namespace masonry
       Solution
       solve(const LinearProgram &lp) const override;
 
+      /**
+       * Solve @p lp from the basis in @p warm (simplex from that basis, no
+       * presolve: the dual simplex unless `Algorithm = primal simplex'),
+       * and store the optimal basis there. Without a basis of the same
+       * shape, as solve().
+       */
+      Solution
+      solve_warm(const LinearProgram &lp, WarmStart &warm) const override;
+
     private:
       /** Value of `Algorithm`. */
-      std::string algorithm = "dual simplex";
+      std::string algorithm = "automatic";
       /** Value of `Presolve`. */
       bool presolve = true;
+
+      /**
+       * solve() with an optional starting basis; on an optimal solve, the
+       * final basis goes to @p basis_out.
+       */
+      Solution
+      solve(const LinearProgram &lp,
+            const ClpBasis      *basis_in,
+            ClpBasis            *basis_out) const;
 
       /** A silent Clp model holding @p lp, with the time limit set. */
       std::unique_ptr<ClpSimplex>
       create(const LinearProgram &lp) const;
 
-      /** Run the chosen algorithm on @p model. */
+      /** Run @p method ("dual simplex", ...) on @p model. */
       void
-      run(ClpSimplex &model, const bool use_presolve) const;
+      run(ClpSimplex        &model,
+          const std::string &method,
+          const bool         use_presolve) const;
+
+      /**
+       * `automatic`: solve Clp's explicit dual of @p model (the static
+       * problem of the mechanism LP) with @p method, restore the primal and
+       * dual solutions into @p model and finish with the primal simplex
+       * from that basis (usually no iteration). Returns whether @p model is
+       * then proven optimal; otherwise the caller solves @p lp directly.
+       */
+      bool
+      solve_through_dual(ClpSimplex        &model,
+                         const std::string &method,
+                         unsigned int      &iterations) const;
     };
 
 
@@ -109,12 +188,21 @@ namespace masonry
     {
       prm.declare_entry(
         "Algorithm",
-        "dual simplex",
-        dealii::Patterns::Selection("dual simplex|primal simplex|barrier"),
-        "Algorithm of Clp: `dual simplex', `primal simplex', or `barrier' "
+        "automatic",
+        dealii::Patterns::Selection(
+          "automatic|dual simplex|primal simplex|barrier"),
+        "Algorithm of Clp: `dual simplex', `primal simplex', `barrier' "
         "(primal-dual interior point followed by crossover, so that the "
-        "solution is a vertex as with the simplex methods). Unitless "
-        "choice.");
+        "solution is a vertex as with the simplex methods), or `automatic': "
+        "when the LP has at least as many columns as rows (Mohr-Coulomb "
+        "joints: the plastic multipliers), Clp solves the explicit dual of "
+        "the LP (for a mechanism LP, the static problem in the contact "
+        "forces) with the barrier and no presolve, maps the vertex back and "
+        "confirms it with the primal simplex, else (or if that is not "
+        "proven optimal: an infeasible or unbounded LP) the barrier on the "
+        "LP itself; with fewer columns than rows (no tension no sliding) "
+        "the dual simplex. The choice comes from the measurements in "
+        "contrib/benchmarks/lp_solvers. Unitless choice.");
       prm.declare_entry("Presolve",
                         "true",
                         dealii::Patterns::Bool(),
@@ -177,12 +265,14 @@ namespace masonry
     }
 
     void
-    Clp::run(ClpSimplex &model, const bool use_presolve) const
+    Clp::run(ClpSimplex        &model,
+             const std::string &method,
+             const bool         use_presolve) const
     {
       ClpSolve options;
-      if (algorithm == "primal simplex")
+      if (method == "primal simplex")
         options.setSolveType(ClpSolve::usePrimal);
-      else if (algorithm == "barrier")
+      else if (method == "barrier")
         options.setSolveType(ClpSolve::useBarrier); // with crossover
       else
         options.setSolveType(ClpSolve::useDual);
@@ -191,25 +281,124 @@ namespace masonry
       model.initialSolve(options);
     }
 
+    bool
+    Clp::solve_through_dual(ClpSimplex        &model,
+                            const std::string &method,
+                            unsigned int      &iterations) const
+    {
+      try
+        {
+          std::unique_ptr<ClpSimplex> dual = dual_of(model);
+          if (!dual)
+            return false;
+          dual->setLogLevel(0);
+          dual->messageHandler()->setLogLevel(0);
+          if (time_limit() > 0)
+            dual->setMaximumSeconds(time_limit());
+          // without presolve: with it, the barrier's vertex of the dual
+          // maps back to a basis that is optimal only to the tolerances
+          // (the limit load of the cantilever test came out 1.4e-8 low),
+          // and it is slower from 6 x 8 Bothwell blocks up
+          run(*dual, method, false);
+          iterations += dual->numberIterations();
+          if (!dual->isProvenOptimal())
+            return false;
+          static_cast<ClpSimplexOther &>(model).restoreFromDual(dual.get());
+          // clean up from the restored basis: a vertex of the original
+          // problem
+          model.primal(0);
+          iterations += model.numberIterations();
+          return model.isProvenOptimal();
+        }
+      catch (const CoinError &e)
+        {
+          // Clp's dualisation handles only some bound patterns: solve
+          // directly
+          return false;
+        }
+    }
+
     Solution
     Clp::solve(const LinearProgram &lp) const
+    {
+      return solve(lp, nullptr, nullptr);
+    }
+
+    Solution
+    Clp::solve_warm(const LinearProgram &lp, WarmStart &warm) const
+    {
+      const ClpBasis *in = dynamic_cast<const ClpBasis *>(warm.data.get());
+      if (in && (in->n_columns != lp.n_columns() || in->n_rows != lp.n_rows()))
+        in = nullptr;
+      auto     out      = std::make_unique<ClpBasis>();
+      Solution solution = solve(lp, in, out.get());
+      if (in)
+        ++warm.n_warm;
+      if (solution.status == Status::optimal)
+        warm.data = std::move(out);
+      return solution;
+    }
+
+    Solution
+    Clp::solve(const LinearProgram &lp,
+               const ClpBasis      *basis_in,
+               ClpBasis            *basis_out) const
     {
       const auto start_time = std::chrono::steady_clock::now();
       Solution   solution;
 
-      std::unique_ptr<ClpSimplex> model = create(lp);
-      run(*model, presolve);
-      solution.iterations = model->numberIterations();
-      if (!model->isProvenOptimal() && presolve &&
+      std::unique_ptr<ClpSimplex> model  = create(lp);
+      std::string                 method = algorithm;
+      bool                        done   = false;
+      bool                        warm   = false;
+      if (basis_in)
+        {
+          // a simplex from the stored basis, without presolve (which would
+          // drop it); its verdict is then handled as a cold one's
+          model->copyinStatus(basis_in->status.data());
+          if (algorithm == "primal simplex")
+            model->primal(0);
+          else
+            model->dual(0);
+          solution.iterations += model->numberIterations();
+          method =
+            algorithm == "primal simplex" ? "primal simplex" : "dual simplex";
+          warm = true;
+          done = model->isProvenOptimal() ||
+                 model->isProvenPrimalInfeasible() ||
+                 model->isProvenDualInfeasible();
+          if (!done)
+            model = create(lp);
+        }
+      if (!warm && algorithm == "automatic")
+        {
+          // measured (contrib/benchmarks/lp_solvers): with more columns
+          // than rows (Mohr-Coulomb), the barrier on the dual LP; otherwise
+          // (no tension no sliding: many rows, few columns) the dual
+          // simplex on the LP itself
+          method = lp.n_columns() >= lp.n_rows() ? "barrier" : "dual simplex";
+          if (method == "barrier")
+            {
+              done = solve_through_dual(*model, method, solution.iterations);
+              if (!done)
+                model = create(lp);
+            }
+        }
+      if (!done)
+        {
+          run(*model, method, presolve);
+          solution.iterations += model->numberIterations();
+        }
+      if (!done && !model->isProvenOptimal() && presolve &&
           !model->hitMaximumIterations())
         {
           // confirm infeasibility/unboundedness (or recover from a failure)
           // on the original problem: presolve's verdicts are less reliable
           model = create(lp);
-          run(*model, false);
+          run(*model, method, false);
           solution.iterations += model->numberIterations();
         }
-      if (model->isProvenOptimal() && algorithm == "barrier" &&
+      if (!done && model->isProvenOptimal() && method == "barrier" &&
           !certificate_ok(lp, *model))
         {
           // the barrier maps infinite bounds to huge finite ones, so that an
@@ -241,6 +430,13 @@ namespace masonry
                                     model->dualRowSolution() + m);
           solution.objective = lp.objective_value(solution.x);
           solution.message   = "Clp: optimal";
+          if (basis_out)
+            {
+              basis_out->n_columns = n;
+              basis_out->n_rows    = m;
+              basis_out->status.assign(model->statusArray(),
+                                       model->statusArray() + n + m);
+            }
         }
       else if (model->isProvenPrimalInfeasible())
         {
@@ -287,5 +483,6 @@ namespace masonry
 
 MASONRY_REGISTER_LP_SOLVER(masonry::lp::Clp,
                            "clp",
-                           "COIN-OR Clp: dual or primal simplex, or barrier "
-                           "with crossover.")
+                           "COIN-OR Clp: dual or primal simplex, barrier "
+                           "with crossover, or automatic (the explicit dual "
+                           "problem by barrier or primal simplex).")

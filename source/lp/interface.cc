@@ -65,6 +65,12 @@ namespace masonry
     Interface::parse_parameters(dealii::ParameterHandler &)
     {}
 
+    Solution
+    Interface::solve_warm(const LinearProgram &lp, WarmStart &) const
+    {
+      return solve(lp);
+    }
+
     bool
     Interface::export_mps() const
     {

@@ -126,11 +126,14 @@ namespace masonry
       /**
        * Solve @p lp, timing it into seconds_solve, and write it to
        * @p mps_name in the output directory if `Export MPS file` is set.
+       * With @p warm, the solver starts from (and updates) that state
+       * (lp::Interface::solve_warm()).
        */
       lp::Solution
       solve(const lp::LinearProgram &lp,
             RunContext              &context,
-            const std::string       &mps_name = "lp.mps");
+            const std::string       &mps_name = "lp.mps",
+            lp::WarmStart           *warm     = nullptr);
 
       /**
        * Largest violation of a row bound by the solution (in the LP's

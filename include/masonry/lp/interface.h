@@ -9,6 +9,7 @@
 #include <masonry/core/plugins.h>
 #include <masonry/lp/linear_program.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -73,6 +74,28 @@ namespace masonry
     };
 
     /**
+     * What a back-end keeps from one solve to start the next one (a basis):
+     * see Interface::solve_warm(). Back-ends derive their own data.
+     */
+    struct WarmStartData
+    {
+      virtual ~WarmStartData() = default;
+    };
+
+    /**
+     * The warm-start state of a sequence of LPs of the same shape (number
+     * of rows and columns): empty at first, filled by every optimal solve
+     * of Interface::solve_warm(). One object per sequence (and per thread).
+     */
+    struct WarmStart
+    {
+      /** The back-end's data; nullptr before the first optimal solve. */
+      std::unique_ptr<WarmStartData> data;
+      /** Number of solves that started from a stored basis. */
+      unsigned int n_warm = 0;
+    };
+
+    /**
      * Base class of LP solver back-ends. Create one with
      * `plugins::Registry<lp::Interface>::create(prm)` after the registry's
      * declare_parameters(); it reads the shared entries of
@@ -117,6 +140,16 @@ namespace masonry
        */
       virtual Solution
       solve(const LinearProgram &lp) const = 0;
+
+      /**
+       * Solve @p lp starting from what @p warm holds from an earlier solve
+       * of an LP with the same numbers of rows and columns (coefficients
+       * and bounds may differ), and store the final state in @p warm. Same
+       * optimum and status as solve() (to the solver's tolerances). The
+       * default ignores @p warm and calls solve().
+       */
+      virtual Solution
+      solve_warm(const LinearProgram &lp, WarmStart &warm) const;
 
       /**
        * Whether the caller should write the LP to `lp.mps` in the output
