@@ -58,9 +58,20 @@ main(int argc, char **argv)
   check(finite("cutback"), "large steps: curve finite");
   check(a.at("max_damage").as_number() == 1, "large steps: joint debonded");
 
-  const masonry::Json b = run("snap_back", text(1e8, 10, 20));
-  check(b.at("status").as_string() == "not converged",
-        "snap-back: status not converged");
+  // a run without a result: exit code 1 with one line, summary.json with
+  // status `failed', `complete' false and the analysis' own status
+  testing::write_file("snap_back.prm",
+                      "set Output directory = results/snap_back\n" +
+                        text(1e8, 10, 20));
+  const testing::Result snap = testing::run({"snap_back.prm"});
+  check(snap.exit_code == 1 &&
+          std::count(snap.err.begin(), snap.err.end(), '\n') == 1,
+        "snap-back: exit code 1, one error line");
+  const masonry::Json b =
+    masonry::Json::parse(testing::read_file("results/snap_back/summary.json"));
+  check(b.at("status").as_string() == "failed" && !b.at("complete").as_bool() &&
+          b.at("analysis_status").as_string() == "not converged",
+        "snap-back: status failed (analysis status not converged)");
   check(b.contains("message") &&
           b.at("message").as_string().find("no convergence at platen "
                                            "displacement") == 0,

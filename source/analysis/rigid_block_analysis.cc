@@ -17,6 +17,7 @@
 #include <iomanip>
 #include <limits>
 #include <map>
+#include <sstream>
 
 namespace masonry
 {
@@ -359,8 +360,26 @@ namespace masonry
               }
           });
         }
+      const auto   first   = std::chrono::steady_clock::now();
       const double uniform = fitness[0](x0);
-      const auto   result =
+      {
+        // what a generation will cost, before the first one (silent) starts
+        const double one = std::chrono::duration<double>(
+                             std::chrono::steady_clock::now() - first)
+                             .count();
+        const double generation = one * optimiser->population_size /
+                                  std::max<std::size_t>(1, analyses.size());
+        if (generation > 10)
+          {
+            std::ostringstream line;
+            line << "Adaptation: one evaluation takes " << std::setprecision(3)
+                 << one << " s; a generation of " << optimiser->population_size
+                 << " evaluations on " << analyses.size() << " thread(s) about "
+                 << generation << " s\n";
+            pcout << line.str();
+          }
+      }
+      const auto result =
         optimiser->optimise(context.mpi_communicator,
                             fitness,
                             x0,
@@ -483,6 +502,16 @@ namespace masonry
           dealii::Utilities::MPI::this_mpi_process(context.mpi_communicator) ==
             0)
         lp.write_mps(context.output.file(mps_name));
+      // a large LP can take minutes without a line on the screen
+      if (!quiet && lp.n_rows() > 200000)
+        {
+          std::ostringstream line;
+          line << "LP of " << std::setprecision(3) << lp.n_rows() * 1e-6
+               << " M rows, " << lp.n_columns() * 1e-6 << " M columns, "
+               << lp.n_nonzeros() * 1e-6
+               << " M non-zeros: this may take minutes\n";
+          context.pcout << line.str();
+        }
       const auto         start = std::chrono::steady_clock::now();
       const lp::Solution solution =
         warm ? solver->solve_warm(lp, *warm) : solver->solve(lp);

@@ -9,6 +9,7 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/utilities.h>
 
+#include <algorithm>
 #include <chrono>
 #include <dlfcn.h>
 #include <filesystem>
@@ -32,8 +33,13 @@ namespace masonry
       "\n"
       "Options:\n"
       "  FILE.prm                   run the analysis described in FILE.prm\n"
-      "  --validate FILE.prm        check FILE.prm (entries, values, files) "
-      "without running\n"
+      "  --validate FILE.prm        check FILE.prm (entries, values, "
+      "expressions,\n"
+      "                             output directory) without running\n"
+      "  --defaults FILE.prm        also accept a file that sets no "
+      "Analysis (runs the\n"
+      "                             default analysis; with or after "
+      "--validate too)\n"
       "  --print-parameters[=prm|json]\n"
       "                             write every parameter of every plugin "
       "with its\n"
@@ -41,7 +47,12 @@ namespace masonry
       "  --version                  print the version and exit\n"
       "  --help                     print this text and exit\n"
       "\n"
-      "Runs in parallel under mpirun; only rank 0 writes to the screen.\n";
+      "Runs in parallel under mpirun; only rank 0 writes to the screen.\n"
+      "Exit code: 0 for a result (also `mechanism', `incompatible', "
+      "`no_collapse'),\n"
+      "1 for an error or a run without a result (`not converged', "
+      "`failed'), 2 without\n"
+      "arguments.\n";
 
     /** Declare the driver's own top-level entries. */
     void
@@ -75,8 +86,15 @@ namespace masonry
       dealii::ParameterHandler prm;
       declare_driver_parameters(prm);
       // for the location in the error message of a library that is missing
-      record_parameter_locations(file);
-      prm.parse_input(file, "", true);
+      std::istringstream text(read_parameter_text(file));
+      try
+        {
+          prm.parse_input(text, file, "", true);
+        }
+      catch (const std::exception &exc)
+        {
+          throw dealii::ExcMessage(explain_parse_error(one_line_message(exc)));
+        }
       const auto libraries = dealii::Utilities::split_string_list(
         prm.get("Additional shared libraries"), ',');
       for (const auto &library : libraries)
@@ -103,30 +121,65 @@ namespace masonry
       return "output/" + std::filesystem::path(file).stem().string();
     }
 
-    /** Parse @p file into @p prm, with clear errors for a missing file. */
+    /**
+     * Parse @p file into @p prm, with clear errors for a missing file, an
+     * include cycle, a file that sets no Analysis (unless @p defaults) and
+     * values out of their range.
+     */
     void
-    read_parameter_file(dealii::ParameterHandler &prm, const std::string &file)
+    read_parameter_file(dealii::ParameterHandler &prm,
+                        const std::string        &file,
+                        const bool                defaults)
     {
-      {
-        std::ifstream in(file);
-        AssertThrow(in.good(),
-                    dealii::ExcMessage(file +
-                                       ": cannot open the parameter file"));
-        AssertThrow(!std::filesystem::is_directory(file),
-                    dealii::ExcMessage(file + ": is a directory, not a "
-                                              "parameter file"));
-      }
       load_shared_libraries(file);
       declare_all_parameters(prm);
-      record_parameter_locations(file);
+      std::istringstream text(read_parameter_text(file));
       try
         {
-          prm.parse_input(file);
+          prm.parse_input(text, file, "", false);
         }
       catch (const std::exception &exc)
         {
           throw dealii::ExcMessage(explain_parse_error(one_line_message(exc)));
         }
+      AssertThrow(defaults || parameter_is_set("Analysis"),
+                  dealii::ExcMessage(
+                    file + ": no Analysis set (" +
+                    (std::filesystem::is_empty(file) ?
+                       std::string("the file is empty") :
+                       std::string("no `set Analysis = ...'")) +
+                    "; masonry --defaults " + file +
+                    " runs the default analysis)"));
+      check_parameter_values(prm);
+    }
+
+    /**
+     * `Resume = true' of a wallette needs the checkpoint of an earlier run
+     * in the output directory @p directory.
+     */
+    void
+    check_resume(dealii::ParameterHandler &prm, const std::string &directory)
+    {
+      if (prm.get("Analysis") != "wallette")
+        return;
+      bool resume = false;
+      try
+        {
+          resume = prm.get_bool(std::vector<std::string>{"Wallette"}, "Resume");
+        }
+      catch (...)
+        {
+          return;
+        }
+      const std::string checkpoint =
+        directory + (directory.back() == '/' ? "" : "/") + "checkpoint.0";
+      AssertThrow(!resume || std::filesystem::exists(checkpoint),
+                  dealii::ExcMessage(
+                    parameter_location("Wallette/Resume") +
+                    ": entry 'Wallette/Resume': no checkpoint " + checkpoint +
+                    " (run with `Checkpoint interval' or `Maximum steps' "
+                    "first, with the same output directory and number of "
+                    "ranks)"));
     }
 
     /** Create and set up the analysis: every input check happens here. */
@@ -147,18 +200,98 @@ namespace masonry
       return s;
     }
 
+    /** Statuses that are no result of the analysis: the run failed. */
+    bool
+    is_failure(const std::string &status)
+    {
+      return status == "not converged" || status == "failed" ||
+             status == "stalled" || status == "error";
+    }
+
+    /**
+     * The files of @p output that this run was to write but did not (not a
+     * regular file, or older than @p start): "name (reason)".
+     */
+    std::vector<std::string>
+    unwritten_files(const OutputDirectory                &output,
+                    const std::filesystem::file_time_type start,
+                    const std::vector<std::string>       &skip)
+    {
+      namespace fs = std::filesystem;
+      std::vector<std::string> missing;
+      for (const auto &name : output.files())
+        {
+          if (std::find(skip.begin(), skip.end(), name) != skip.end())
+            continue;
+          const std::string path = output.path() + name;
+          std::error_code   ec;
+          if (fs::is_directory(path, ec))
+            missing.push_back(name + " (a directory of that name exists)");
+          else if (!fs::is_regular_file(path, ec))
+            missing.push_back(name + " (not written)");
+          else if (fs::last_write_time(path, ec) < start || ec)
+            missing.push_back(name + " (not updated: left from an earlier "
+                                     "run)");
+        }
+      return missing;
+    }
+
+    /**
+     * Non-finite numbers in the CSV files of @p output: "file:line".
+     * (Numbers printed by C++ streams as nan, inf, -nan.)
+     */
+    std::vector<std::string>
+    non_finite_in_csv(const OutputDirectory &output)
+    {
+      std::vector<std::string> found;
+      for (const auto &name : output.files())
+        {
+          if (name.size() < 4 || name.substr(name.size() - 4) != ".csv")
+            continue;
+          std::ifstream in(output.path() + name);
+          std::string   line;
+          unsigned int  number = 0;
+          while (std::getline(in, line) && found.size() < 10)
+            {
+              ++number;
+              if (number == 1)
+                continue; // the header
+              std::string lower;
+              for (const char c : line)
+                lower += static_cast<char>(
+                  std::tolower(static_cast<unsigned char>(c)));
+              for (const char *bad : {"nan", "inf"})
+                {
+                  const auto at = lower.find(bad);
+                  if (at != std::string::npos &&
+                      (at == 0 || !std::isalpha(
+                                    static_cast<unsigned char>(lower[at - 1]))))
+                    {
+                      found.push_back(name + ":" + std::to_string(number));
+                      break;
+                    }
+                }
+            }
+        }
+      return found;
+    }
+
     int
-    run_file(const std::string &file, const MPI_Comm comm)
+    run_file(const std::string &file, const MPI_Comm comm, const bool defaults)
     {
       const auto start = std::chrono::steady_clock::now();
+      const auto file_start =
+        std::filesystem::file_time_type::clock::now() - std::chrono::seconds(2);
+      const bool root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
 
       dealii::ParameterHandler prm;
-      read_parameter_file(prm, file);
+      read_parameter_file(prm, file, defaults);
       std::unique_ptr<analysis::Interface> analysis = create_analysis(prm);
 
       std::string directory = prm.get("Output directory");
       if (directory.empty())
         directory = default_output_directory(file);
+      check_resume(prm, directory);
       plugins::ParsePathScope scope("");
       OutputDirectory         output(directory, comm);
 
@@ -176,7 +309,7 @@ namespace masonry
         pcout << "  (holds an earlier run: the files this run writes are "
                  "overwritten, the others are left alone)\n";
 
-      if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
+      if (root)
         {
           std::ofstream used(output.file("parameters.prm"));
           prm.print_parameters(used, dealii::ParameterHandler::ShortPRM);
@@ -185,12 +318,14 @@ namespace masonry
       Json summary               = Json::object();
       summary["analysis"]        = prm.get("Analysis");
       summary["status"]          = "running";
+      summary["complete"]        = false;
       summary["wall_seconds"]    = 0.0;
       summary["masonry_version"] = MASONRY_VERSION;
       summary["n_mpi_ranks"]    = dealii::Utilities::MPI::n_mpi_processes(comm);
       summary["parameter_file"] = file;
 
-      auto write_summary = [&]() {
+      // writes summary.json (rank 0); returns "" or why it failed
+      auto write_summary = [&]() -> std::string {
         summary["wall_seconds"] = std::chrono::duration<double>(
                                     std::chrono::steady_clock::now() - start)
                                     .count();
@@ -199,11 +334,51 @@ namespace masonry
         for (const auto &f : output.files())
           files.push_back(f);
         summary["files"] = files;
-        if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
+        std::string error;
+        if (root)
           {
+            // JSON has no NaN: a non-finite result is removed and named
+            const auto bad = summary.non_finite_members();
+            if (!bad.empty())
+              {
+                Json list = Json::array();
+                for (const auto &b : bad)
+                  {
+                    list.push_back(b);
+                    if (b.find_first_of("/[") == std::string::npos)
+                      summary.erase(b);
+                  }
+                summary["non_finite_results"] = list;
+                // nested ones: drop the whole member holding them
+                for (const auto &b : bad)
+                  {
+                    const auto cut = b.find_first_of("/[");
+                    if (cut != std::string::npos)
+                      summary.erase(b.substr(0, cut));
+                  }
+              }
             std::ofstream out(output.path() + "summary.json");
             out << summary.dump() << "\n";
+            out.close();
+            if (!out)
+              error = "cannot write '" + output.path() + "summary.json'";
           }
+        return dealii::Utilities::MPI::broadcast(comm, error, 0);
+      };
+
+      // a run that gives no result: summary.json says so, exit code 1
+      auto fail = [&](const std::string &status, const std::string &message) {
+        summary["status"]               = status;
+        summary["complete"]             = false;
+        summary["error"]                = message;
+        const std::string summary_error = write_summary();
+        pcout << "Run stopped: " << message << "\n";
+        throw dealii::ExcMessage(
+          message + " [the results in " + output.path() + " are incomplete" +
+          (summary_error.empty() ?
+             "; summary.json has status '" + status + "'" :
+             "; " + summary_error) +
+          "]");
       };
 
       RunContext context{comm, pcout, output, summary};
@@ -213,18 +388,53 @@ namespace masonry
         }
       catch (const std::exception &exc)
         {
-          const std::string message = one_line_message(exc);
-          summary["status"]         = "error";
-          summary["error"]          = message;
-          write_summary();
-          pcout << "Run stopped: " << message << "\n";
-          throw dealii::ExcMessage(
-            message + " [the results in " + output.path() +
-            " are incomplete; summary.json has status 'error']");
+          fail("error", one_line_message(exc));
         }
       if (summary.at("status").as_string() == "running")
         summary["status"] = "completed";
-      write_summary();
+      const std::string status = summary.at("status").as_string();
+      if (is_failure(status))
+        {
+          // the analysis' own words on why there is no result
+          std::string why;
+          for (const char *key : {"explanation", "message"})
+            if (why.empty() && summary.contains(key) &&
+                summary.at(key).type() == Json::Type::string)
+              why = ": " + summary.at(key).as_string();
+          summary["analysis_status"] = status;
+          fail("failed",
+               "the analysis ended with status '" + status + "'" + why +
+                 " (no result)");
+        }
+
+      // every result must be finite and every file written
+      std::string problem;
+      if (root)
+        {
+          const auto bad = summary.non_finite_members();
+          if (!bad.empty())
+            problem = "the result '" + bad.front() +
+                      "' is not a finite number (a value out of its "
+                      "physical range in the parameter file?)";
+          const auto csv = non_finite_in_csv(output);
+          if (problem.empty() && !csv.empty())
+            problem = "non-finite numbers (nan/inf) in " + join(csv) +
+                      " (a value out of its physical range in the parameter "
+                      "file?)";
+          const auto missing =
+            unwritten_files(output, file_start, {"summary.json"});
+          if (problem.empty() && !missing.empty())
+            problem = "result files could not be written: " + join(missing);
+          if (problem.empty() && !log.good())
+            problem = "cannot write '" + output.path() + "log.txt'";
+        }
+      problem = dealii::Utilities::MPI::broadcast(comm, problem, 0);
+      if (!problem.empty())
+        fail("failed", problem);
+
+      summary["complete"]               = true;
+      const std::string summary_problem = write_summary();
+      AssertThrow(summary_problem.empty(), dealii::ExcMessage(summary_problem));
 
       const auto stale = output.stale_files();
       if (!stale.empty())
@@ -245,16 +455,26 @@ namespace masonry
     declare_driver_parameters(prm);
     for (const auto &subsystem : plugins::subsystems())
       subsystem.declare(prm);
+    declare_parameter_ranges(prm);
   }
 
   int
-  run_application(const std::vector<std::string> &arguments,
+  run_application(const std::vector<std::string> &all_arguments,
                   const MPI_Comm                  comm)
   {
     const bool  root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
     std::string option;
     try
       {
+        std::vector<std::string> arguments;
+        bool                     defaults = false;
+        for (const auto &a : all_arguments)
+          if (a == "--defaults")
+            defaults = true;
+          else
+            arguments.push_back(a);
+        AssertThrow(!defaults || !arguments.empty(),
+                    dealii::ExcMessage("--defaults needs a parameter file"));
         if (arguments.empty() || arguments[0] == "--help" ||
             arguments[0] == "-h")
           {
@@ -297,8 +517,13 @@ namespace masonry
                         dealii::ExcMessage(
                           "--validate takes exactly one parameter file"));
             dealii::ParameterHandler prm;
-            read_parameter_file(prm, arguments[1]);
+            read_parameter_file(prm, arguments[1], defaults);
             create_analysis(prm);
+            std::string directory = prm.get("Output directory");
+            if (directory.empty())
+              directory = default_output_directory(arguments[1]);
+            OutputDirectory::check(directory, comm);
+            check_resume(prm, directory);
             if (root)
               std::cout << arguments[1] << ": valid (" << prm.get("Analysis")
                         << " analysis)\n";
@@ -312,7 +537,7 @@ namespace masonry
                                        "got " +
                                        std::to_string(arguments.size()) +
                                        " arguments (see masonry --help)"));
-        return run_file(arguments[0], comm);
+        return run_file(arguments[0], comm, defaults);
       }
     catch (const std::exception &exc)
       {

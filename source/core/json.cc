@@ -2,10 +2,8 @@
 
 #include <deal.II/base/exceptions.h>
 
-#include <cctype>
-#include <charconv>
 #include <cmath>
-#include <cstdio>
+#include <nlohmann/json.hpp>
 
 namespace masonry
 {
@@ -140,278 +138,184 @@ namespace masonry
 
   namespace
   {
+    using ordered_json = nlohmann::ordered_json;
+
     void
-    write_string(std::string &out, const std::string &s)
+    to_nlohmann(const Json &value, ordered_json &out, const std::string &path)
     {
-      out += '"';
-      for (const char c : s)
-        switch (c)
-          {
-            case '"':
-              out += "\\\"";
-              break;
-            case '\\':
-              out += "\\\\";
-              break;
-            case '\n':
-              out += "\\n";
-              break;
-            case '\t':
-              out += "\\t";
-              break;
-            case '\r':
-              out += "\\r";
-              break;
-            default:
-              if (static_cast<unsigned char>(c) < 0x20)
-                {
-                  char buffer[8];
-                  std::snprintf(buffer, sizeof(buffer), "\\u%04x", c);
-                  out += buffer;
-                }
+      switch (value.type())
+        {
+          case Json::Type::null:
+            out = nullptr;
+            break;
+          case Json::Type::boolean:
+            out = value.as_bool();
+            break;
+            case Json::Type::number: {
+              const double x = value.as_number();
+              // JSON has no NaN or infinity; a result that is not a number
+              // must never be written as null or silently dropped
+              AssertThrow(std::isfinite(x),
+                          dealii::ExcMessage(
+                            "refusing to write the non-finite value " +
+                            std::string(std::isnan(x) ? "nan" :
+                                        x > 0         ? "inf" :
+                                                        "-inf") +
+                            " of '" + (path.empty() ? "(value)" : path) +
+                            "' into JSON"));
+              // integers are written without a fraction, as before
+              if (x == std::floor(x) && std::abs(x) < 9.0e15)
+                out = static_cast<long long>(x);
               else
-                out += c;
-          }
-      out += '"';
+                out = x;
+              break;
+            }
+          case Json::Type::string:
+            out = value.as_string();
+            break;
+          case Json::Type::array:
+            out = ordered_json::array();
+            for (std::size_t i = 0; i < value.size(); ++i)
+              {
+                ordered_json element;
+                to_nlohmann(value.at(i),
+                            element,
+                            path + "[" + std::to_string(i) + "]");
+                out.push_back(std::move(element));
+              }
+            break;
+          case Json::Type::object:
+            out = ordered_json::object();
+            for (const auto &key : value.keys())
+              {
+                ordered_json member;
+                to_nlohmann(value.at(key),
+                            member,
+                            path.empty() ? key : path + "/" + key);
+                out[key] = std::move(member);
+              }
+            break;
+        }
+    }
+
+    Json
+    from_nlohmann(const ordered_json &in)
+    {
+      switch (in.type())
+        {
+          case ordered_json::value_t::null:
+          case ordered_json::value_t::discarded:
+            return Json();
+          case ordered_json::value_t::boolean:
+            return Json(in.get<bool>());
+          case ordered_json::value_t::number_integer:
+          case ordered_json::value_t::number_unsigned:
+          case ordered_json::value_t::number_float:
+            return Json(in.get<double>());
+          case ordered_json::value_t::string:
+            return Json(in.get<std::string>());
+            case ordered_json::value_t::array: {
+              Json array = Json::array();
+              for (const auto &element : in)
+                array.push_back(from_nlohmann(element));
+              return array;
+            }
+            case ordered_json::value_t::object: {
+              Json object = Json::object();
+              for (const auto &member : in.items())
+                object[member.key()] = from_nlohmann(member.value());
+              return object;
+            }
+          case ordered_json::value_t::binary:
+            break;
+        }
+      AssertThrow(false, dealii::ExcMessage("unsupported JSON value"));
+      return Json();
     }
 
     void
-    newline(std::string       &out,
-            const unsigned int indent,
-            const unsigned int level)
+    collect_non_finite(const Json               &value,
+                       const std::string        &path,
+                       std::vector<std::string> &paths)
     {
-      if (indent == 0)
-        return;
-      out += '\n';
-      out.append(indent * level, ' ');
+      switch (value.type())
+        {
+          case Json::Type::number:
+            if (!std::isfinite(value.as_number()))
+              paths.push_back(path);
+            break;
+          case Json::Type::array:
+            for (std::size_t i = 0; i < value.size(); ++i)
+              collect_non_finite(value.at(i),
+                                 path + "[" + std::to_string(i) + "]",
+                                 paths);
+            break;
+          case Json::Type::object:
+            for (const auto &key : value.keys())
+              collect_non_finite(value.at(key),
+                                 path.empty() ? key : path + "/" + key,
+                                 paths);
+            break;
+          default:
+            break;
+        }
     }
   } // namespace
 
-  void
-  Json::write(std::string       &out,
-              const unsigned int indent,
-              unsigned int       level) const
+  bool
+  Json::as_bool() const
   {
-    switch (kind)
-      {
-        case Type::null:
-          out += "null";
-          break;
-        case Type::boolean:
-          out += boolean_value ? "true" : "false";
-          break;
-        case Type::number:
-          if (!std::isfinite(number_value))
-            out += "null";
-          else
-            {
-              char       buffer[32];
-              const auto result =
-                std::to_chars(buffer, buffer + sizeof(buffer), number_value);
-              out.append(buffer, result.ptr);
-            }
-          break;
-        case Type::string:
-          write_string(out, string_value);
-          break;
-          case Type::array: {
-            out += '[';
-            // arrays of numbers stay on one line: curves and vectors read
-            // better
-            bool flat = true;
-            for (const auto &v : array_values)
-              flat = flat && (v.kind != Type::array && v.kind != Type::object);
-            for (std::size_t i = 0; i < array_values.size(); ++i)
-              {
-                if (i > 0)
-                  out += flat ? ", " : ",";
-                if (!flat)
-                  newline(out, indent, level + 1);
-                array_values[i].write(out, indent, level + 1);
-              }
-            if (!flat && !array_values.empty())
-              newline(out, indent, level);
-            out += ']';
-            break;
-          }
-          case Type::object: {
-            out += '{';
-            for (std::size_t i = 0; i < object_values.size(); ++i)
-              {
-                if (i > 0)
-                  out += ',';
-                newline(out, indent, level + 1);
-                write_string(out, object_values[i].first);
-                out += indent > 0 ? ": " : ":";
-                object_values[i].second.write(out, indent, level + 1);
-              }
-            if (!object_values.empty())
-              newline(out, indent, level);
-            out += '}';
-            break;
-          }
-      }
+    AssertThrow(kind == Type::boolean,
+                dealii::ExcMessage("JSON value is not a boolean"));
+    return boolean_value;
+  }
+
+  std::vector<std::string>
+  Json::keys() const
+  {
+    std::vector<std::string> list;
+    for (const auto &member : object_values)
+      list.push_back(member.first);
+    return list;
+  }
+
+  void
+  Json::erase(const std::string &key)
+  {
+    for (auto it = object_values.begin(); it != object_values.end(); ++it)
+      if (it->first == key)
+        {
+          object_values.erase(it);
+          return;
+        }
+  }
+
+  std::vector<std::string>
+  Json::non_finite_members() const
+  {
+    std::vector<std::string> paths;
+    collect_non_finite(*this, "", paths);
+    return paths;
   }
 
   std::string
   Json::dump(const unsigned int indent) const
   {
-    std::string out;
-    write(out, indent, 0);
-    return out;
+    ordered_json out;
+    to_nlohmann(*this, out, "");
+    return out.dump(static_cast<int>(indent));
   }
-
-  namespace
-  {
-    class Parser
-    {
-    public:
-      explicit Parser(const std::string &text)
-        : s(text)
-      {}
-
-      Json
-      parse_document()
-      {
-        Json v = value();
-        skip();
-        AssertThrow(pos == s.size(), error("trailing characters"));
-        return v;
-      }
-
-    private:
-      dealii::ExcMessage
-      error(const std::string &what) const
-      {
-        return dealii::ExcMessage("malformed JSON at character " +
-                                  std::to_string(pos) + ": " + what);
-      }
-
-      void
-      skip()
-      {
-        while (pos < s.size() &&
-               std::isspace(static_cast<unsigned char>(s[pos])))
-          ++pos;
-      }
-
-      bool
-      consume(const std::string &word)
-      {
-        if (s.compare(pos, word.size(), word) == 0)
-          {
-            pos += word.size();
-            return true;
-          }
-        return false;
-      }
-
-      std::string
-      string()
-      {
-        AssertThrow(pos < s.size() && s[pos] == '"',
-                    error("expected a string"));
-        ++pos;
-        std::string out;
-        while (pos < s.size() && s[pos] != '"')
-          {
-            char c = s[pos++];
-            if (c == '\\' && pos < s.size())
-              {
-                const char e = s[pos++];
-                switch (e)
-                  {
-                    case 'n':
-                      c = '\n';
-                      break;
-                    case 't':
-                      c = '\t';
-                      break;
-                    case 'r':
-                      c = '\r';
-                      break;
-                    case 'u':
-                      c = static_cast<char>(
-                        std::stoi(s.substr(pos, 4), nullptr, 16));
-                      pos += 4;
-                      break;
-                    default:
-                      c = e;
-                  }
-              }
-            out += c;
-          }
-        AssertThrow(pos < s.size(), error("unterminated string"));
-        ++pos;
-        return out;
-      }
-
-      Json
-      value()
-      {
-        skip();
-        AssertThrow(pos < s.size(), error("unexpected end"));
-        const char c = s[pos];
-        if (c == '{')
-          {
-            ++pos;
-            Json obj = Json::object();
-            skip();
-            if (consume("}"))
-              return obj;
-            while (true)
-              {
-                skip();
-                const std::string key = string();
-                skip();
-                AssertThrow(consume(":"), error("expected ':'"));
-                obj[key] = value();
-                skip();
-                if (consume("}"))
-                  return obj;
-                AssertThrow(consume(","), error("expected ',' or '}'"));
-              }
-          }
-        if (c == '[')
-          {
-            ++pos;
-            Json arr = Json::array();
-            skip();
-            if (consume("]"))
-              return arr;
-            while (true)
-              {
-                arr.push_back(value());
-                skip();
-                if (consume("]"))
-                  return arr;
-                AssertThrow(consume(","), error("expected ',' or ']'"));
-              }
-          }
-        if (c == '"')
-          return Json(string());
-        if (consume("true"))
-          return Json(true);
-        if (consume("false"))
-          return Json(false);
-        if (consume("null"))
-          return Json();
-        double     number = 0;
-        const auto result =
-          std::from_chars(s.data() + pos, s.data() + s.size(), number);
-        AssertThrow(result.ec == std::errc(), error("expected a value"));
-        pos = result.ptr - s.data();
-        return Json(number);
-      }
-
-      const std::string &s;
-      std::size_t        pos = 0;
-    };
-  } // namespace
 
   Json
   Json::parse(const std::string &text)
   {
-    return Parser(text).parse_document();
+    try
+      {
+        return from_nlohmann(ordered_json::parse(text));
+      }
+    catch (const nlohmann::json::exception &exc)
+      {
+        throw dealii::ExcMessage(std::string("malformed JSON: ") + exc.what());
+      }
   }
 } // namespace masonry

@@ -24,17 +24,19 @@ namespace masonry
         fs::create_directories(directory, ec);
         if (ec)
           error = "cannot create '" + directory + "': " + ec.message();
+        else if (!fs::is_directory(directory, ec))
+          error = "'" + directory + "' is not a directory";
         else
           {
             const std::string probe = directory + ".masonry-write-test";
-            std::ofstream     test(probe);
-            if (!test)
-              error = "cannot write into '" + directory + "'";
-            else
-              {
-                test.close();
-                fs::remove(probe, ec);
-              }
+            {
+              std::ofstream test(probe);
+              test << "test\n";
+              test.close();
+              if (!test)
+                error = "cannot write into '" + directory + "'";
+            }
+            fs::remove(probe, ec);
           }
         if (error.empty())
           {
@@ -60,6 +62,52 @@ namespace masonry
                   }
               }
           }
+      }
+    error = dealii::Utilities::MPI::broadcast(comm, error, 0);
+    AssertThrow(error.empty(), ExcParameter("Output directory", error));
+  }
+
+  void
+  OutputDirectory::check(const std::string &path, const MPI_Comm comm)
+  {
+    namespace fs = std::filesystem;
+    std::string error;
+    if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        const std::string directory =
+          path.empty() || path.back() == '/' ? path : path + "/";
+        // the directories that do not exist yet, outermost first
+        std::vector<fs::path> created;
+        std::error_code       ec;
+        fs::path p = fs::absolute(directory, ec).lexically_normal();
+        if (!p.has_filename())
+          p = p.parent_path();
+        for (fs::path q = p; !q.empty() && !fs::exists(q, ec);
+             q          = q.parent_path())
+          {
+                     created.insert(created.begin(), q);
+                     if (q == q.parent_path())
+              break;
+          }
+        fs::create_directories(directory, ec);
+        if (ec)
+          error = "cannot create '" + directory + "': " + ec.message();
+        else if (!fs::is_directory(directory, ec))
+          error = "'" + directory + "' is not a directory";
+        else
+          {
+            const std::string probe = directory + ".masonry-write-test";
+            {
+              std::ofstream test(probe);
+              test << "test\n";
+              test.close();
+              if (!test)
+                error = "cannot write into '" + directory + "'";
+            }
+            fs::remove(probe, ec);
+          }
+        for (auto it = created.rbegin(); it != created.rend(); ++it)
+          fs::remove(*it, ec);
       }
     error = dealii::Utilities::MPI::broadcast(comm, error, 0);
     AssertThrow(error.empty(), ExcParameter("Output directory", error));
@@ -170,6 +218,15 @@ namespace masonry
   Log::stream()
   {
     return *out;
+  }
+
+  bool
+  Log::good() const
+  {
+    if (file == nullptr)
+      return true;
+    file->flush();
+    return file->is_open() && file->good();
   }
 
   void

@@ -2,6 +2,8 @@
  * @file
  * A small JSON value for summary.json: objects keep insertion order, numbers
  * are written in the shortest form that reads back to the same double.
+ * Writing and reading go through nlohmann::json (Debian's
+ * nlohmann-json3-dev), kept out of this header.
  */
 #ifndef masonry_core_json_h
 #define masonry_core_json_h
@@ -74,6 +76,25 @@ namespace masonry
     double
     as_number() const;
 
+    /** The boolean held (a boolean value only). */
+    bool
+    as_bool() const;
+
+    /** The keys of an object, in insertion order. */
+    std::vector<std::string>
+    keys() const;
+
+    /** Remove the member @p key of an object, if present. */
+    void
+    erase(const std::string &key);
+
+    /**
+     * The paths ("a/b[2]") of every number in this value that is NaN or
+     * infinite: such a value cannot be written.
+     */
+    std::vector<std::string>
+    non_finite_members() const;
+
     /** The string held (a string value only). */
     const std::string &
     as_string() const;
@@ -88,7 +109,8 @@ namespace masonry
 
     /**
      * The text of this value, indented by @p indent spaces per level.
-     * Non-finite numbers are written as null: JSON has no NaN.
+     * JSON has no NaN or infinity: a non-finite number throws an ExcMessage
+     * naming its path instead of being written as null.
      */
     std::string
     dump(const unsigned int indent = 2) const;
@@ -101,11 +123,6 @@ namespace masonry
     parse(const std::string &text);
 
   private:
-    void
-    write(std::string       &out,
-          const unsigned int indent,
-          unsigned int       level) const;
-
     Type                                      kind          = Type::null;
     bool                                      boolean_value = false;
     double                                    number_value  = 0;

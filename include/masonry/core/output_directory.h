@@ -31,6 +31,14 @@ namespace masonry
      */
     OutputDirectory(const std::string &path, const MPI_Comm comm);
 
+    /**
+     * Check, without leaving a trace, that the directory @p path can be
+     * created (or exists) and written into; throws an ExcParameter naming
+     * `Output directory` otherwise. Used by `masonry --validate`.
+     */
+    static void
+    check(const std::string &path, const MPI_Comm comm);
+
     /** The directory, ending in '/'. */
     const std::string &
     path() const;
@@ -78,6 +86,10 @@ namespace masonry
     /** The stream to write progress and results to. */
     std::ostream &
     stream();
+
+    /** Whether log.txt (if opened) was written without an error so far. */
+    bool
+    good() const;
 
     /** Start copying everything written from now on to @p filename. */
     void

@@ -24,6 +24,25 @@ namespace masonry
   record_parameter_locations(const std::string &filename);
 
   /**
+   * The text of the parameter file @p filename as given to deal.II: a UTF-8
+   * byte-order mark removed, runs of white space inside the values of `set`
+   * lines collapsed to one space. Also records the locations of the entries
+   * (record_parameter_locations()) and checks the `include` statements of
+   * the file and of the files it includes: a missing file, a directory and
+   * an include cycle (a file that includes itself) are errors naming the
+   * `include` line.
+   */
+  std::string
+  read_parameter_text(const std::string &filename);
+
+  /**
+   * Whether the parameter file (or a file it includes) sets the entry
+   * @p full_path ("Geometry model/Density").
+   */
+  bool
+  parameter_is_set(const std::string &full_path);
+
+  /**
    * "file.prm:12" for an entry set in the input file, or "file.prm" (with a
    * note that the default is used) when the file does not set it.
    */
@@ -36,6 +55,10 @@ namespace masonry
    */
   std::string
   parameter_at_line(const unsigned int line);
+
+  /** The same for line @p line of @p file (the file or an included one). */
+  std::string
+  parameter_at_line(const std::string &file, const unsigned int line);
 
   /**
    * Reword an error of dealii::ParameterHandler::parse_input(), already in
@@ -61,6 +84,25 @@ namespace masonry
    */
   std::string
   one_line_message(const std::exception &exc);
+
+  /**
+   * Give the numeric entries with a physical range (a table in
+   * core/parameter_ranges.cc) that range as their pattern and in their
+   * documentation, so that 1e300 or a negative strength is rejected when
+   * the file is read. Called after every plugin has declared its entries.
+   */
+  void
+  declare_parameter_ranges(dealii::ParameterHandler &prm);
+
+  /**
+   * Checks of a parsed file that need no model: the function expressions
+   * (`Thickness', `Surface load', `Settlement') are parsed and evaluated on
+   * sample points of the geometry's box, and must be finite and within
+   * their physical range; the numbers of `Point loads' and `Line loads'
+   * too. Errors name the entry and its line.
+   */
+  void
+  check_parameter_values(dealii::ParameterHandler &prm);
 
   /** Split a comma-separated list of doubles (e.g. a vector entry). */
   std::vector<double>
