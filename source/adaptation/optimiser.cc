@@ -1,9 +1,11 @@
 #include <masonry/adaptation/optimiser.h>
 #include <masonry/core/parameters.h>
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <utility>
 
 namespace masonry
 {
@@ -110,37 +112,6 @@ namespace masonry
 
     namespace
     {
-      /** The common loop of the pagmo algorithms. */
-      class PagmoOptimiser : public Optimiser
-      {
-      public:
-        Result
-        optimise(
-          const MPI_Comm                                 comm,
-          const std::vector<Fitness>                    &fitness,
-          const std::vector<double>                     &x0,
-          const std::function<void(const Generation &)> &progress) override
-        {
-          PagmoSettings settings;
-          settings.algorithm         = algorithm();
-          settings.population_size   = population_size;
-          settings.generations       = generations;
-          settings.seed              = seed;
-          settings.stall_generations = stall_generations;
-          settings.parameter_1       = parameter_1;
-          settings.parameter_2       = parameter_2;
-          return run_pagmo(comm, settings, fitness, x0, progress);
-        }
-
-      protected:
-        /** The pagmo algorithm's short name. */
-        virtual std::string
-        algorithm() const = 0;
-
-        /** Its two parameters. */
-        double parameter_1 = 0, parameter_2 = 0;
-      };
-
       /** No adaptation. */
       class None : public Optimiser
       {
@@ -167,142 +138,116 @@ namespace masonry
         }
       };
 
-      /** pagmo's simple genetic algorithm (the seed paper's method). */
-      class Genetic : public PagmoOptimiser
+      /** The registered pagmo algorithms, in the order of registration. */
+      std::vector<PagmoAlgorithm> &
+      pagmo_algorithms()
+      {
+        static std::vector<PagmoAlgorithm> list;
+        return list;
+      }
+
+      /** The `Optimiser` plugin of a pagmo algorithm. */
+      class PagmoOptimiser : public Optimiser
       {
       public:
-        std::string
-        algorithm() const override
-        {
-          return "sga";
-        }
+        explicit PagmoOptimiser(const PagmoAlgorithm &algorithm)
+          : algorithm(algorithm)
+        {}
 
+        /** Declare the algorithm's own entries. */
         static void
-        declare_parameters(dealii::ParameterHandler &prm)
+        declare(const PagmoAlgorithm &algorithm, dealii::ParameterHandler &prm)
         {
-          prm.declare_entry("Crossover probability",
-                            "0.9",
-                            dealii::Patterns::Double(0, 1),
-                            "Probability of crossover (dimensionless).");
-          prm.declare_entry("Mutation probability",
-                            "0.1",
-                            dealii::Patterns::Double(0, 1),
-                            "Probability that a gene mutates "
-                            "(dimensionless; polynomial mutation).");
+          for (const auto &e : algorithm.entries)
+            prm.declare_entry(e.name,
+                              e.default_value,
+                              dealii::Patterns::Double(e.min, e.max),
+                              e.documentation);
         }
 
         void
         parse_parameters(dealii::ParameterHandler &prm) override
         {
-          parameter_1 = prm.get_double("Crossover probability");
-          parameter_2 = prm.get_double("Mutation probability");
+          parameters.clear();
+          for (const auto &e : algorithm.entries)
+            parameters.push_back(prm.get_double(e.name));
         }
+
+        Result
+        optimise(
+          const MPI_Comm                                 comm,
+          const std::vector<Fitness>                    &fitness,
+          const std::vector<double>                     &x0,
+          const std::function<void(const Generation &)> &progress) override
+        {
+          PagmoSettings settings;
+          settings.create            = algorithm.create;
+          settings.population_size   = population_size;
+          settings.generations       = generations;
+          settings.seed              = seed;
+          settings.stall_generations = stall_generations;
+          settings.parameters        = parameters;
+          return run_pagmo(comm, settings, fitness, x0, progress);
+        }
+
+      private:
+        const PagmoAlgorithm algorithm;
+        std::vector<double>  parameters;
       };
 
-      /** pagmo's differential evolution. */
-      class DifferentialEvolution : public PagmoOptimiser
+      // The registry takes plain function pointers: one pair per slot,
+      // slot i serving the i-th registered pagmo algorithm.
+      constexpr unsigned int max_pagmo_algorithms = 32;
+
+      template <unsigned int i>
+      void
+      declare_slot(dealii::ParameterHandler &prm)
       {
-      public:
-        std::string
-        algorithm() const override
-        {
-          return "de";
-        }
+        PagmoOptimiser::declare(pagmo_algorithms()[i], prm);
+      }
 
-        static void
-        declare_parameters(dealii::ParameterHandler &prm)
-        {
-          prm.declare_entry("Weight",
-                            "0.8",
-                            dealii::Patterns::Double(0, 2),
-                            "Differential weight F (dimensionless).");
-          prm.declare_entry("Crossover probability",
-                            "0.9",
-                            dealii::Patterns::Double(0, 1),
-                            "Crossover probability CR (dimensionless).");
-        }
-
-        void
-        parse_parameters(dealii::ParameterHandler &prm) override
-        {
-          parameter_1 = prm.get_double("Weight");
-          parameter_2 = prm.get_double("Crossover probability");
-        }
-      };
-
-      /** pagmo's covariance matrix adaptation evolution strategy. */
-      class Cmaes : public PagmoOptimiser
+      template <unsigned int i>
+      std::unique_ptr<Optimiser>
+      create_slot()
       {
-      public:
-        std::string
-        algorithm() const override
-        {
-          return "cmaes";
-        }
+        return std::make_unique<PagmoOptimiser>(pagmo_algorithms()[i]);
+      }
 
-        static void
-        declare_parameters(dealii::ParameterHandler &prm)
-        {
-          prm.declare_entry("Initial step",
-                            "0.2",
-                            dealii::Patterns::Double(0, 1),
-                            "Initial step size σ₀ in gene space "
-                            "(dimensionless, genes lie in [0, 1]).");
-        }
-
-        void
-        parse_parameters(dealii::ParameterHandler &prm) override
-        {
-          parameter_1 = prm.get_double("Initial step");
-        }
-      };
-
-      /** pagmo's particle swarm optimisation. */
-      class ParticleSwarm : public PagmoOptimiser
+      template <unsigned int... i>
+      constexpr std::array<std::pair<plugins::Registry<Optimiser>::Declare,
+                                     plugins::Registry<Optimiser>::Factory>,
+                           sizeof...(i)>
+      make_slots(std::integer_sequence<unsigned int, i...>)
       {
-      public:
-        std::string
-        algorithm() const override
-        {
-          return "pso";
-        }
-
-        static void
-        declare_parameters(dealii::ParameterHandler &prm)
-        {
-          prm.declare_entry("Inertia",
-                            "0.7298",
-                            dealii::Patterns::Double(0, 1),
-                            "Inertia weight ω (dimensionless).");
-        }
-
-        void
-        parse_parameters(dealii::ParameterHandler &prm) override
-        {
-          parameter_1 = prm.get_double("Inertia");
-        }
-      };
+        return {{{&declare_slot<i>, &create_slot<i>}...}};
+      }
     } // namespace
-  }   // namespace adaptation
+
+    bool
+    register_pagmo_algorithm(const PagmoAlgorithm &algorithm)
+    {
+      static constexpr auto slots = make_slots(
+        std::make_integer_sequence<unsigned int, max_pagmo_algorithms>());
+      auto &list = pagmo_algorithms();
+      AssertThrow(list.size() < max_pagmo_algorithms,
+                  dealii::ExcMessage("more than " +
+                                     std::to_string(max_pagmo_algorithms) +
+                                     " pagmo algorithms registered"));
+      AssertThrow(algorithm.create != nullptr,
+                  dealii::ExcMessage("the pagmo algorithm '" + algorithm.name +
+                                     "' has no factory"));
+      // the slots refer to the list by index: never reallocate it
+      list.reserve(max_pagmo_algorithms);
+      list.push_back(algorithm);
+      const auto &slot = slots[list.size() - 1];
+      return plugins::Registry<Optimiser>::add(algorithm.name,
+                                               algorithm.description,
+                                               slot.first,
+                                               slot.second);
+    }
+  } // namespace adaptation
 } // namespace masonry
 
 MASONRY_REGISTER_OPTIMISER(masonry::adaptation::None,
                            "none",
                            "No adaptation: the uniform mesh of the analysis.")
-MASONRY_REGISTER_OPTIMISER(
-  masonry::adaptation::Genetic,
-  "genetic",
-  "pagmo's simple genetic algorithm (sga: exponential crossover, "
-  "polynomial mutation, tournament selection), the seed paper's method.")
-MASONRY_REGISTER_OPTIMISER(masonry::adaptation::DifferentialEvolution,
-                           "differential evolution",
-                           "pagmo's differential evolution (de, variant "
-                           "rand/1/exp).")
-MASONRY_REGISTER_OPTIMISER(masonry::adaptation::Cmaes,
-                           "cmaes",
-                           "pagmo's covariance matrix adaptation evolution "
-                           "strategy (cmaes, bounds enforced).")
-MASONRY_REGISTER_OPTIMISER(masonry::adaptation::ParticleSwarm,
-                           "particle swarm",
-                           "pagmo's particle swarm optimisation (pso, "
-                           "constriction variant).")

@@ -2,10 +2,6 @@
 #include <masonry/adaptation/pagmo_runner.h>
 
 #include <pagmo/algorithm.hpp>
-#include <pagmo/algorithms/cmaes.hpp>
-#include <pagmo/algorithms/de.hpp>
-#include <pagmo/algorithms/pso.hpp>
-#include <pagmo/algorithms/sga.hpp>
 #include <pagmo/population.hpp>
 #include <pagmo/problem.hpp>
 
@@ -45,31 +41,6 @@ namespace masonry
         }
       };
 
-      pagmo::algorithm
-      make_algorithm(const PagmoSettings &s)
-      {
-        if (s.algorithm == "sga")
-          return pagmo::algorithm{pagmo::sga(1u,
-                                             s.parameter_1,
-                                             1.,
-                                             s.parameter_2,
-                                             1.,
-                                             2u,
-                                             "exponential",
-                                             "polynomial",
-                                             "tournament",
-                                             s.seed)};
-        if (s.algorithm == "de")
-          return pagmo::algorithm{
-            pagmo::de(1u, s.parameter_1, s.parameter_2, 2u, 0., 0., s.seed)};
-        if (s.algorithm == "cmaes")
-          return pagmo::algorithm{pagmo::cmaes(
-            1u, -1, -1, -1, -1, s.parameter_1, 0., 0., true, true, s.seed)};
-        if (s.algorithm == "pso")
-          return pagmo::algorithm{pagmo::pso(
-            1u, s.parameter_1, 2.05, 2.05, 0.5, 5u, 2u, 4u, true, s.seed)};
-        throw std::invalid_argument("unknown pagmo algorithm " + s.algorithm);
-      }
     } // namespace
 
     Result
@@ -120,7 +91,7 @@ namespace masonry
         {
           PagmoSettings island = settings;
           island.seed          = settings.seed + 1000u * (rank * n_threads + t);
-          algorithms.push_back(make_algorithm(island));
+          algorithms.push_back(settings.create(island));
           counters[t] = std::make_shared<unsigned long>(0);
         }
       parallel([&](const unsigned int t) {

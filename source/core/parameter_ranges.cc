@@ -266,6 +266,8 @@ namespace masonry
                "' as a function of x, y, z (" + parser_message(exc) + ").");
         }
       const double samples[] = {0, 0.13, -0.29, 0.5, -0.71, 1};
+      double       smallest  = std::numeric_limits<double>::max();
+      double       largest   = -std::numeric_limits<double>::max();
       for (const double a : samples)
         for (const double b : samples)
           for (const double c : samples)
@@ -296,8 +298,23 @@ namespace masonry
                          number(value) + " " + unit + " at the point " +
                          where.str() + " m, outside the physical range [-" +
                          number(bound) + ", " + number(bound) + "] " + unit);
+                  if (d == 0)
+                    {
+                      smallest = std::min(smallest, value);
+                      largest  = std::max(largest, value);
+                    }
                 }
             }
+      // a constant thickness of less than a millimetre (1e-300) gives blocks
+      // without volume; 0 and negative values are explained by the plugin
+      AssertThrow(entry != "Thickness" || smallest != largest ||
+                    smallest <= 0 || smallest >= 1e-3,
+                  dealii::ExcMessage(parameter_location(path) + ": entry '" +
+                                     path + "': " + number(smallest) +
+                                     " m is below one millimetre: a "
+                                     "degenerate model (the physical range "
+                                     "is 0.001 to " +
+                                     number(bound) + " m)"));
     }
 
     /**

@@ -2,10 +2,15 @@
 
 #include <deal.II/base/exceptions.h>
 
+#include <coin/CoinFinite.hpp>
+#include <coin/CoinMpsIO.hpp>
+#include <coin/CoinPackedMatrix.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iterator>
 #include <set>
 
 namespace masonry
@@ -75,55 +80,6 @@ namespace masonry
         return names;
       }
 
-      /** Shortest decimal representation that reads back exactly. */
-      std::string
-      number(const double value)
-      {
-        char buffer[40];
-        for (int digits = 1; digits <= 17; ++digits)
-          {
-            std::snprintf(buffer, sizeof(buffer), "%.*g", digits, value);
-            if (std::strtod(buffer, nullptr) == value)
-              break;
-          }
-        return buffer;
-      }
-
-      /** A fixed-MPS data line: fields at columns 5, 15, 25, 40, 50. */
-      std::string
-      data_line(const std::string &indicator,
-                const std::string &name,
-                const std::string &name1,
-                const std::string &value1,
-                const std::string &name2  = "",
-                const std::string &value2 = "")
-      {
-        std::string line = " " + indicator;
-        auto        pad  = [&line](const std::size_t column) {
-          // column is 1-based; keep at least one blank between fields
-          if (line.size() < column - 1)
-            line.resize(column - 1, ' ');
-          else
-            line += ' ';
-        };
-        pad(5);
-        line += name;
-        pad(15);
-        line += name1;
-        if (!value1.empty())
-          {
-            pad(25);
-            line += value1;
-          }
-        if (!name2.empty())
-          {
-            pad(40);
-            line += name2;
-            pad(50);
-            line += value2;
-          }
-        return line + "\n";
-      }
     } // namespace
 
     unsigned int
@@ -312,102 +268,71 @@ namespace masonry
     void
     LinearProgram::write_mps(const std::string &filename) const
     {
+      const unsigned int        n = n_columns(), m = n_rows();
+      const double              sign = maximize ? -1. : 1.;
+      const ColumnMatrix        a    = column_matrix();
+      std::vector<CoinBigIndex> start(a.start.begin(), a.start.end());
+      std::vector<int>          length(n);
+      for (unsigned int j = 0; j < n; ++j)
+        length[j] = a.start[j + 1] - a.start[j];
+      const CoinPackedMatrix matrix(true,
+                                    m,
+                                    n,
+                                    start[n],
+                                    a.value.data(),
+                                    a.row_index.data(),
+                                    start.data(),
+                                    length.data());
+      const auto             coin = [](const double bound) {
+        return bound == infinity  ? COIN_DBL_MAX :
+                           bound == -infinity ? -COIN_DBL_MAX :
+                                                bound;
+      };
+      std::vector<double> lower(n), upper(n), c(n), row_lo(m), row_up(m);
+      for (unsigned int j = 0; j < n; ++j)
+        {
+          lower[j] = coin(col_lower[j]);
+          upper[j] = coin(col_upper[j]);
+          c[j]     = sign * cost[j] + 0.;
+        }
+      for (unsigned int i = 0; i < m; ++i)
+        {
+          row_lo[i] = coin(r_lower[i]);
+          row_up[i] = coin(r_upper[i]);
+        }
+      CoinMpsIO mps;
+      mps.messageHandler()->setLogLevel(0);
+      mps.setMpsData(matrix,
+                     COIN_DBL_MAX,
+                     lower.data(),
+                     upper.data(),
+                     c.data(),
+                     nullptr,
+                     row_lo.data(),
+                     row_up.data(),
+                     mps_names(col_names, 'C'),
+                     mps_names(r_names, 'R'));
+      mps.setProblemName("MASONRY");
+      mps.setObjectiveName("OBJ");
+      // extra accuracy: numbers are written so that they read back exactly
+      AssertThrow(mps.writeMps(filename.c_str(), 0, 1) == 0,
+                  dealii::ExcMessage("Cannot write '" + filename + "'."));
+
+      // CoinMpsIO writes no comments: put the sense first
+      std::ifstream in(filename);
+      std::string   body((std::istreambuf_iterator<char>(in)),
+                       std::istreambuf_iterator<char>());
+      in.close();
       std::ofstream out(filename);
-      AssertThrow(out, dealii::ExcMessage("Cannot write '" + filename + "'."));
-
-      const std::vector<std::string> rows = mps_names(r_names, 'R');
-      const std::vector<std::string> cols = mps_names(col_names, 'C');
-      const double                   sign = maximize ? -1. : 1.;
-
-      out << "* masonry linear program: " << n_rows() << " rows, "
-          << n_columns() << " columns, " << n_nonzeros() << " entries\n";
+      out << "* masonry linear program: " << m << " rows, " << n << " columns, "
+          << n_nonzeros() << " entries\n";
       if (maximize)
         out << "* The problem MAXIMISES c^T x; this file states the "
                "equivalent\n"
                "* MINIMISE (-c)^T x: the optimum reported by an MPS reader "
                "is\n"
                "* minus the maximum (do not pass -max/--max).\n";
-      out << "NAME          MASONRY\n";
-      out << "ROWS\n";
-      out << " N  OBJ\n";
-      std::vector<std::string> type(n_rows());
-      for (unsigned int i = 0; i < n_rows(); ++i)
-        {
-          const bool has_lower = r_lower[i] > -infinity;
-          const bool has_upper = r_upper[i] < infinity;
-          if (has_lower && has_upper && r_lower[i] == r_upper[i])
-            type[i] = "E";
-          else if (has_lower)
-            type[i] = "G"; // a finite upper bound too: RANGES below
-          else if (has_upper)
-            type[i] = "L";
-          else
-            type[i] = "N"; // free row
-          out << " " << type[i] << "  " << rows[i] << "\n";
-        }
-
-      out << "COLUMNS\n";
-      const ColumnMatrix m = column_matrix();
-      for (unsigned int j = 0; j < n_columns(); ++j)
-        {
-          // the objective entry, then the matrix entries; a column without
-          // any entry gets an explicit zero cost so that it is declared
-          if (cost[j] != 0. || m.start[j] == m.start[j + 1])
-            out << data_line("", cols[j], "OBJ", number(sign * cost[j] + 0.));
-          for (int k = m.start[j]; k < m.start[j + 1]; ++k)
-            out << data_line("",
-                             cols[j],
-                             rows[m.row_index[k]],
-                             number(m.value[k]));
-        }
-
-      out << "RHS\n";
-      for (unsigned int i = 0; i < n_rows(); ++i)
-        {
-          double rhs = 0;
-          if (type[i] == "E" || type[i] == "G")
-            rhs = r_lower[i];
-          else if (type[i] == "L")
-            rhs = r_upper[i];
-          if (rhs != 0.)
-            out << data_line("", "RHS", rows[i], number(rhs));
-        }
-
-      bool ranges_header = false;
-      for (unsigned int i = 0; i < n_rows(); ++i)
-        if (type[i] == "G" && r_upper[i] < infinity)
-          {
-            if (!ranges_header)
-              out << "RANGES\n";
-            ranges_header = true;
-            // for a G row, the range R gives lower <= a x <= lower + |R|
-            out << data_line("",
-                             "RNG",
-                             rows[i],
-                             number(r_upper[i] - r_lower[i]));
-          }
-
-      out << "BOUNDS\n";
-      for (unsigned int j = 0; j < n_columns(); ++j)
-        {
-          const double l = col_lower[j], u = col_upper[j];
-          const bool   has_l = l > -infinity, has_u = u < infinity;
-          if (has_l && has_u && l == u)
-            out << data_line("FX", "BND", cols[j], number(l));
-          else if (!has_l && !has_u)
-            out << data_line("FR", "BND", cols[j], "");
-          else
-            {
-              // MPS default is 0 <= x < infinity
-              if (!has_l)
-                out << data_line("MI", "BND", cols[j], "");
-              else if (l != 0.)
-                out << data_line("LO", "BND", cols[j], number(l));
-              if (has_u)
-                out << data_line("UP", "BND", cols[j], number(u));
-            }
-        }
-      out << "ENDATA\n";
+      out << body;
       AssertThrow(out, dealii::ExcMessage("Error writing '" + filename + "'."));
     }
   } // namespace lp

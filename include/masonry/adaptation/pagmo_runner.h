@@ -11,6 +11,11 @@
 #include <string>
 #include <vector>
 
+namespace pagmo
+{
+  class algorithm;
+}
+
 namespace masonry
 {
   namespace adaptation
@@ -43,11 +48,16 @@ namespace masonry
       unsigned long evaluations = 0;
     };
 
+    struct PagmoSettings;
+
+    /** Builds a pagmo algorithm from the settings of a run (or island). */
+    using PagmoFactory = pagmo::algorithm (*)(const PagmoSettings &);
+
     /** Settings of a pagmo run. */
     struct PagmoSettings
     {
-      /** "sga", "de", "cmaes" or "pso". */
-      std::string algorithm;
+      /** Builds the algorithm (one generation per evolve() call). */
+      PagmoFactory create = nullptr;
       /** Population size. */
       unsigned int population_size;
       /** Largest number of generations. */
@@ -56,9 +66,50 @@ namespace masonry
       unsigned int seed;
       /** Generations without improvement before stopping (0: never). */
       unsigned int stall_generations;
-      /** Two algorithm parameters (see the plugins). */
-      double parameter_1, parameter_2;
+      /**
+       * Values of the algorithm's own entries, in the order of
+       * PagmoAlgorithm::entries.
+       */
+      std::vector<double> parameters;
     };
+
+    /** A number entry of a pagmo algorithm's parameter subsection. */
+    struct PagmoEntry
+    {
+      /** Entry name. */
+      std::string name;
+      /** Default value as written in the parameter file. */
+      std::string default_value;
+      /** Range of valid values. */
+      double min, max;
+      /** Help text (with the unit). */
+      std::string documentation;
+    };
+
+    /**
+     * A pagmo algorithm offered as an `Optimiser` plugin. Each algorithm
+     * is one file in source/adaptation/pagmo/ (or in a user's shared
+     * library) that includes pagmo but no deal.II header, defines its
+     * factory and calls MASONRY_REGISTER_PAGMO_ALGORITHM.
+     */
+    struct PagmoAlgorithm
+    {
+      /** Plugin name (`set Optimiser = ...`). */
+      std::string name;
+      /** Its description in the selection's help text. */
+      std::string description;
+      /** Its own entries, declared in `subsection Adaptation/<Name>`. */
+      std::vector<PagmoEntry> entries;
+      /** Builds the algorithm (settings.parameters follow entries). */
+      PagmoFactory create;
+    };
+
+    /**
+     * Add @p algorithm to the `Optimiser` plugins (implemented with the
+     * plugin registry in optimiser.cc). Returns true.
+     */
+    bool
+    register_pagmo_algorithm(const PagmoAlgorithm &algorithm);
 
     /** A fitness function (the quantity maximised). */
     using Fitness = std::function<double(const std::vector<double> &)>;
@@ -81,5 +132,21 @@ namespace masonry
               const std::function<void(const Generation &)> &progress);
   } // namespace adaptation
 } // namespace masonry
+
+#define MASONRY_PAGMO_CONCAT_(a, b) a##b
+#define MASONRY_PAGMO_CONCAT(a, b) MASONRY_PAGMO_CONCAT_(a, b)
+
+/**
+ * Register a pagmo algorithm as an `Optimiser` plugin: the arguments
+ * initialise a masonry::adaptation::PagmoAlgorithm (name, description,
+ * entries, factory). Use once, at namespace scope, in the algorithm's file.
+ */
+#define MASONRY_REGISTER_PAGMO_ALGORITHM(...)                              \
+  namespace                                                                \
+  {                                                                        \
+    const bool MASONRY_PAGMO_CONCAT(masonry_pagmo_registered_, __LINE__) = \
+      masonry::adaptation::register_pagmo_algorithm(                       \
+        masonry::adaptation::PagmoAlgorithm{__VA_ARGS__});                 \
+  }
 
 #endif

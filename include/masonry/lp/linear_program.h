@@ -168,12 +168,11 @@ namespace masonry
       row_activities(const std::vector<double> &x) const;
 
       /**
-       * Write the problem to @p filename in MPS format. The file is fixed
-       * MPS (names of at most 8 characters in the fixed fields) whenever the
-       * numbers fit the 12-character fields, and is always valid free MPS:
-       * numbers are written with as many digits as needed to be read back
-       * exactly, which may overflow the fixed fields. It is read by
-       * `clp file.mps` and `glpsol --freemps file.mps`.
+       * Write the problem to @p filename in MPS format with COIN-OR
+       * CoinUtils' writer (CoinMpsIO, "extra accuracy": numbers read back
+       * exactly), preceded by comment lines stating the size and the
+       * sense. It is read by `clp file.mps` and `glpsol --freemps
+       * file.mps`.
        *
        * Names: the user's names are used when all names of rows (or of
        * columns) are valid MPS names (1 to 8 printable characters, no

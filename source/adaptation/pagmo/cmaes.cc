@@ -1,0 +1,32 @@
+/**
+ * @file
+ * The `Optimiser` plugin of pagmo's covariance matrix adaptation evolution
+ * strategy (cmaes). pagmo only: no deal.II header may be included here (see
+ * pagmo_runner.h).
+ */
+#include <masonry/adaptation/pagmo_runner.h>
+
+#include <pagmo/algorithm.hpp>
+#include <pagmo/algorithms/cmaes.hpp>
+
+namespace
+{
+  pagmo::algorithm
+  create(const masonry::adaptation::PagmoSettings &s)
+  {
+    return pagmo::algorithm{pagmo::cmaes(
+      1u, -1, -1, -1, -1, s.parameters[0], 0., 0., true, true, s.seed)};
+  }
+} // namespace
+
+MASONRY_REGISTER_PAGMO_ALGORITHM(
+  "cmaes",
+  "pagmo's covariance matrix adaptation evolution strategy (cmaes, bounds "
+  "enforced).",
+  {{"Initial step",
+    "0.2",
+    0,
+    1,
+    "Initial step size σ₀ in gene space (dimensionless, genes lie in [0, "
+    "1])."}},
+  &create)

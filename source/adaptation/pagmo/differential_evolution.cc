@@ -1,0 +1,30 @@
+/**
+ * @file
+ * The `Optimiser` plugin of pagmo's differential evolution (de). pagmo only: no
+ * deal.II header may be included here (see pagmo_runner.h).
+ */
+#include <masonry/adaptation/pagmo_runner.h>
+
+#include <pagmo/algorithm.hpp>
+#include <pagmo/algorithms/de.hpp>
+
+namespace
+{
+  pagmo::algorithm
+  create(const masonry::adaptation::PagmoSettings &s)
+  {
+    return pagmo::algorithm{
+      pagmo::de(1u, s.parameters[0], s.parameters[1], 2u, 0., 0., s.seed)};
+  }
+} // namespace
+
+MASONRY_REGISTER_PAGMO_ALGORITHM(
+  "differential evolution",
+  "pagmo's differential evolution (de, variant rand/1/exp).",
+  {{"Weight", "0.8", 0, 2, "Differential weight F (dimensionless)."},
+   {"Crossover probability",
+    "0.9",
+    0,
+    1,
+    "Crossover probability CR (dimensionless)."}},
+  &create)
