@@ -343,10 +343,10 @@ namespace masonry
       {
         const std::size_t end   = text.find(named);
         const std::size_t given = text.rfind(pattern);
-        std::string       v     = end == std::string::npos ?
-                                    "" :
-                                    trim(text.substr(value.size(), end - value.size()));
-        std::string       p     = trim(text.substr(given + pattern.size()));
+        std::string       v = end == std::string::npos || end < value.size() ?
+                                "" :
+                                trim(text.substr(value.size(), end - value.size()));
+        std::string       p = trim(text.substr(given + pattern.size()));
         if (!p.empty() && p[0] == ':')
           p = trim(p.substr(1));
         for (std::string *t : {&v, &p})
