@@ -200,6 +200,10 @@ namespace masonry
         p.normal_stiffness = normal_stiffness;
         p.shear_stiffness  = shear_stiffness;
         law                = std::make_unique<CompositeJoint>(make(1.));
+        // the strength scatter multiplies the strengths by up to 1.8: the
+        // snap-back limits must hold there too (checked here, not in the
+        // middle of an assembly)
+        make(1.8);
       }
 
       std::vector<StateVariable>
@@ -300,7 +304,11 @@ namespace masonry
         catch (const std::invalid_argument &e)
           {
             // the message names the entry (composite joint: <entry> ...)
-            AssertThrow(false, ExcParameter("Composite", e.what()));
+            std::string m = e.what();
+            if (factor != 1.)
+              m += " (with the strengths times 1.8, the largest factor of "
+                   "`Strength scatter')";
+            AssertThrow(false, ExcParameter("Composite", m));
           }
         return CompositeJoint(p);
       }
