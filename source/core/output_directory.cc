@@ -13,31 +13,43 @@
 
 namespace masonry
 {
+  namespace
+  {
+    /**
+     * Create @p directory (with its parents) and check that a file can be
+     * written into it. Returns an error message, empty on success.
+     */
+    std::string
+    create_writable(const std::string &directory)
+    {
+      namespace fs = std::filesystem;
+      std::error_code ec;
+      fs::create_directories(directory, ec);
+      if (ec)
+        return "cannot create '" + directory + "': " + ec.message();
+      if (!fs::is_directory(directory, ec))
+        return "'" + directory + "' is not a directory";
+      const std::string probe = directory + ".masonry-write-test";
+      std::string       error;
+      {
+        std::ofstream test(probe);
+        test << "test\n";
+        test.close();
+        if (!test)
+          error = "cannot write into '" + directory + "'";
+      }
+      fs::remove(probe, ec);
+      return error;
+    }
+  } // namespace
+
   OutputDirectory::OutputDirectory(const std::string &path, const MPI_Comm comm)
     : directory(path.empty() || path.back() == '/' ? path : path + "/")
   {
-    namespace fs = std::filesystem;
     std::string error;
     if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
       {
-        std::error_code ec;
-        fs::create_directories(directory, ec);
-        if (ec)
-          error = "cannot create '" + directory + "': " + ec.message();
-        else if (!fs::is_directory(directory, ec))
-          error = "'" + directory + "' is not a directory";
-        else
-          {
-            const std::string probe = directory + ".masonry-write-test";
-            {
-              std::ofstream test(probe);
-              test << "test\n";
-              test.close();
-              if (!test)
-                error = "cannot write into '" + directory + "'";
-            }
-            fs::remove(probe, ec);
-          }
+        error = create_writable(directory);
         if (error.empty())
           {
             std::ifstream old(directory + "summary.json");
@@ -89,23 +101,7 @@ namespace masonry
                      if (q == q.parent_path())
               break;
           }
-        fs::create_directories(directory, ec);
-        if (ec)
-          error = "cannot create '" + directory + "': " + ec.message();
-        else if (!fs::is_directory(directory, ec))
-          error = "'" + directory + "' is not a directory";
-        else
-          {
-            const std::string probe = directory + ".masonry-write-test";
-            {
-              std::ofstream test(probe);
-              test << "test\n";
-              test.close();
-              if (!test)
-                error = "cannot write into '" + directory + "'";
-            }
-            fs::remove(probe, ec);
-          }
+        error = create_writable(directory);
         for (auto it = created.rbegin(); it != created.rend(); ++it)
           fs::remove(*it, ec);
       }
