@@ -18,7 +18,9 @@
 #include <deal.II/distributed/shared_tria.h>
 
 #include <chrono>
+#include <cmath>
 #include <iomanip>
+#include <sstream>
 
 #include "model/assembler.h"
 #include "model/checkpoint.h"
@@ -65,8 +67,9 @@ namespace masonry
         void
         describe();
         /** The converged step into the curve, the postprocessors and the
-         * screen. */
-        void
+         * screen; false (and nothing recorded) when its reaction, strain
+         * or damages are not finite. */
+        bool
         record_step(const Segment     &leg,
                     const unsigned int its,
                     const unsigned int removed,
@@ -304,7 +307,22 @@ namespace masonry
                 bricks.accept(8 * cell->active_cell_index() + q, older);
       }
 
-      void
+      /** The entries to look at when @p stage (Assembler::non_finite(),
+       * Newton) holds a number that is not finite. */
+      std::string
+      likely_entries(const std::string &stage)
+      {
+        if (stage.find("bricks") != std::string::npos)
+          return "the entries of `subsection Brick material' (moduli, "
+                 "strengths, fracture energies)";
+        if (stage.find("joints") != std::string::npos)
+          return "the entries of `subsection Interface law' (stiffnesses, "
+                 "strengths, fracture energies)";
+        return "`Linear solver' and `Maximum damage' of the interface law "
+               "(a fully debonded joint leaves a singular tangent)";
+      }
+
+      bool
       Wallette::record_step(const Segment     &leg,
                             const unsigned int its,
                             const unsigned int removed,
@@ -321,6 +339,13 @@ namespace masonry
         p.cycle                                 = leg.cycle;
         p.unloading                             = leg.unloading;
         p.deleted                               = specimen.n_deleted;
+        bool finite = std::isfinite(p.force) && std::isfinite(p.stress) &&
+                      std::isfinite(p.max_damage) &&
+                      std::isfinite(p.gauge_strain);
+        for (const double d : p.brick_damages)
+          finite = finite && std::isfinite(d);
+        if (!finite)
+          return false;
         curve.push_back(p);
         for (auto &pp : postprocessors)
           pp->step(*view);
@@ -340,6 +365,7 @@ namespace masonry
         if (removed > 0)
           pcout << ", " << removed << " cells deleted";
         pcout << std::setprecision(6) << "\n";
+        return true;
       }
 
       CheckpointParts
@@ -424,8 +450,21 @@ namespace masonry
             postprocessor_data[i] = postprocessors[i]->save();
           save_checkpoint(checkpoint_parts(), status, context);
         };
-        unsigned int   consecutive_cutbacks = 0, steps_this_run = 0;
-        std::string    status = "completed", message;
+        unsigned int consecutive_cutbacks = 0, steps_this_run = 0,
+                     small_steps = 0;
+        std::string status       = "completed", message, non_finite;
+        // a non-finite failure since the steps fell below the stall floor
+        std::string recent_non_finite;
+        // no progress: steps this small, stall_steps in a row
+        const double stall_floor =
+          nominal *
+          std::min(stall_fraction,
+                   settings.integrator.implex ?
+                     settings.integrator.implex_minimum_step :
+                     1.) *
+          (1 - 1e-9);
+        // the state of the last converged step is bad: not written
+        bool           bad_state = false;
         System::Vector u_converged(system.u);
         // along the direction: positive displacement is the loading sense
         while (progress.segment < legs.size())
@@ -447,7 +486,7 @@ namespace masonry
                                     0.);
             unsigned int its = 0;
             const bool   ok  = newton.solve_step(
-              system, *assembler, *solver, next, time_step, its);
+              system, *assembler, *solver, next, time_step, its, non_finite);
             statistics.total_newton += its;
             if (!ok)
               {
@@ -456,15 +495,32 @@ namespace masonry
                 if (++consecutive_cutbacks > settings.protocol.max_cutbacks)
                   {
                     std::ostringstream m;
-                    m << "no convergence at platen displacement " << next
-                      << " m after " << settings.protocol.max_cutbacks
-                      << " halvings of the step (last converged: " << applied
-                      << " m); results up to there are written";
-                    status  = "not converged";
+                    if (!non_finite.empty())
+                      {
+                        // a smaller step did not help: a bad model
+                        m << "a number that is not finite (nan or inf) in "
+                          << non_finite << " at platen displacement " << next
+                          << " m, also after " << settings.protocol.max_cutbacks
+                          << " halvings of the step (last converged: "
+                          << applied << " m); check "
+                          << likely_entries(non_finite)
+                          << "; results up to there are written";
+                        status = "failed";
+                      }
+                    else
+                      {
+                        m << "no convergence at platen displacement " << next
+                          << " m after " << settings.protocol.max_cutbacks
+                          << " halvings of the step (last converged: "
+                          << applied << " m); results up to there are written";
+                        status = "not converged";
+                      }
                     message = m.str();
                     pcout << "Stopped: " << message << "\n";
                     break;
                   }
+                if (!non_finite.empty())
+                  recent_non_finite = non_finite;
                 progress.increment /= 2;
                 progress.easy_steps = 0;
                 pcout << "  cut-back: step halved to " << progress.increment
@@ -473,6 +529,21 @@ namespace masonry
               }
             consecutive_cutbacks = 0;
             const double error = integrator->after_step(*assembler, time_step);
+            if (!std::isfinite(error))
+              {
+                // (std::max would keep a NaN step and the run would go on)
+                system.u = u_converged;
+                status   = "failed";
+                message  = "a number that is not finite (nan or inf) in " +
+                          assembler->non_finite() +
+                          " in the IMPL-EX update after the step to platen "
+                          "displacement " +
+                          Utilities::to_string(next) + " m; check " +
+                          likely_entries(assembler->non_finite()) +
+                          "; results up to the step before are written";
+                pcout << "Stopped: " << message << "\n";
+                break;
+              }
             if (step_control->redo(taken, error, progress))
               {
                 system.u = u_converged;
@@ -494,7 +565,56 @@ namespace masonry
                 assembler->invalidate();
                 solver->forget();
               }
-            record_step(leg, its, removed, legs.size());
+            if (!record_step(leg, its, removed, legs.size()))
+              {
+                status    = "failed";
+                bad_state = true;
+                message =
+                  "the platen reaction, the gauge strain or a damage is not "
+                  "finite (nan or inf) after the step to platen displacement " +
+                  Utilities::to_string(next) + " m; check " +
+                  likely_entries("bricks") + " and " +
+                  likely_entries("joints") +
+                  "; results up to the step before are written";
+                pcout << "Stopped: " << message << "\n";
+                break;
+              }
+            small_steps = taken < stall_floor ? small_steps + 1 : 0;
+            if (small_steps == 0)
+              recent_non_finite.clear();
+            if (small_steps >= stall_steps && !recent_non_finite.empty())
+              {
+                // cut back before a non-finite number again and again
+                std::ostringstream m;
+                m << "a number that is not finite (nan or inf) in "
+                  << recent_non_finite << " whenever the platen moves past "
+                  << next << " m: the steps shrank below " << stall_floor
+                  << " m without getting past it; check "
+                  << likely_entries(recent_non_finite)
+                  << "; results up to there are written";
+                status  = "failed";
+                message = m.str();
+                pcout << "Stopped: " << message << "\n";
+                break;
+              }
+            if (small_steps >= stall_steps)
+              {
+                std::ostringstream m;
+                m << "no progress: the last " << stall_steps
+                  << " steps were all smaller than "
+                  << stall_floor / nominal * (1 + 1e-9)
+                  << " x the nominal step (the last " << taken
+                  << " m, at platen displacement " << next << " m); check "
+                  << (settings.integrator.implex ?
+                        "`IMPL-EX damage tolerance', `IMPL-EX minimum step'" :
+                        "`Maximum Newton iterations', `Newton tolerance'")
+                  << " and `Step growth factor'; results up to there are "
+                     "written";
+                status  = "stalled";
+                message = m.str();
+                pcout << "Stopped: " << message << "\n";
+                break;
+              }
             const bool last = progress.segment + 1 == legs.size() &&
                               !leg.unloading &&
                               next >= leg.target * (1 - 1e-12);
@@ -520,9 +640,12 @@ namespace masonry
         if (status != "completed")
           {
             system.u = u_converged;
-            for (auto &pp : postprocessors)
-              pp->output(*view, progress.step, curve.back().strain);
-            save(status);
+            if (!bad_state)
+              {
+                for (auto &pp : postprocessors)
+                  pp->output(*view, progress.step, curve.back().strain);
+                save(status);
+              }
           }
         finish(status,
                message,

@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 namespace masonry
 {
@@ -17,6 +18,41 @@ namespace masonry
     {
       using namespace dealii;
       using Clock = std::chrono::steady_clock;
+
+      namespace
+      {
+        bool
+        all_finite(const Vector<double> &v)
+        {
+          for (const double x : v)
+            if (!std::isfinite(x))
+              return false;
+          return true;
+        }
+      } // namespace
+
+      std::string
+      Assembler::non_finite() const
+      {
+        static const char *names[] = {"the stresses of the bricks",
+                                      "the tractions of the joints",
+                                      "the damages of the bricks",
+                                      "the damages of the joints"};
+        for (unsigned int k = 0; k < 4; ++k)
+          if ((non_finite_bits & (1u << k)) != 0)
+            return names[k];
+        return "";
+      }
+
+      void
+      Assembler::gather_non_finite()
+      {
+        // a flag of every rank: the run stops on all of them together
+        const unsigned int mine = non_finite_bits;
+        const int          ierr = MPI_Allreduce(
+          &mine, &non_finite_bits, 1, MPI_UNSIGNED, MPI_BOR, parts.system.comm);
+        AssertThrowMPI(ierr);
+      }
 
       Assembler::Assembler(const AssemblyParts &parts,
                            const bool           gauss,
@@ -117,6 +153,7 @@ namespace masonry
         System    &system = parts.system;
         system.ghosted    = system.u;
         system.f_int      = 0;
+        non_finite_bits   = 0;
         const bool linear_model =
           parts.material.is_linear() && parts.law.is_linear();
         const bool with_matrix = need_matrix && !(linear_model && matrix_valid);
@@ -147,6 +184,7 @@ namespace masonry
           }
         assemble_joints(with_matrix, time_step);
         system.f_int.compress(VectorOperation::add);
+        gather_non_finite();
         is_initial = Utilities::MPI::min(int(is_initial), system.comm) == 1;
         if (with_matrix)
           {
@@ -219,6 +257,8 @@ namespace masonry
                   // the response cannot differ from the cached elastic one
                   const FullMatrix<double> &k = *matrix_of_cell[c];
                   k.vmult(fe_local, ue);
+                  if (!all_finite(fe_local))
+                    non_finite_bits |= 1u;
                   system.f_int.add(dofs, fe_local);
                   if (with_matrix && !bricks_assembled)
                     system.zero_constraints.distribute_local_to_global(
@@ -235,6 +275,8 @@ namespace masonry
               is_initial = false;
               brick_cell(
                 fe_values, strain, c, point, with_matrix, fe_local, ke);
+              if (!all_finite(fe_local))
+                non_finite_bits |= 1u;
               system.f_int.add(dofs, fe_local);
               if (with_matrix)
                 system.zero_constraints.distribute_local_to_global(
@@ -306,10 +348,6 @@ namespace masonry
                   }
               }
           }
-        for (unsigned int i = 0; i < 24; ++i)
-          AssertThrow(std::isfinite(fe_local[i]),
-                      ExcMessage("the brick material returned a "
-                                 "stress that is not a number"));
       }
 
       void
@@ -345,6 +383,8 @@ namespace masonry
                 // gives the exact response, the law is not evaluated
                 const FullMatrix<double> &k = *matrix_of_interface[n];
                 k.vmult(fi, ue);
+                if (!all_finite(fi))
+                  non_finite_bits |= 2u;
                 system.f_int.add(face.dofs, fi);
                 if (with_matrix)
                   system.zero_constraints.distribute_local_to_global(
@@ -380,6 +420,8 @@ namespace masonry
                     if (d > 0)
                       is_initial = false;
                 }
+            if (!all_finite(fi))
+              non_finite_bits |= 2u;
             system.f_int.add(face.dofs, fi);
             if (with_matrix)
               system.zero_constraints.distribute_local_to_global(ki,
@@ -392,11 +434,14 @@ namespace masonry
       Assembler::update_states(const Integrator &integrator,
                                const double      time_step)
       {
-        System &system = parts.system;
-        system.ghosted = system.u;
-        double error   = 0;
-        // the largest change of a damage against its extrapolation
-        const auto damage_error = [&](const auto          &law,
+        System &system  = parts.system;
+        system.ghosted  = system.u;
+        double error    = 0;
+        non_finite_bits = 0;
+        // the largest change of a damage against its extrapolation (a
+        // non-finite one is flagged: std::max would drop a NaN)
+        const auto damage_error = [&](const unsigned int   flag,
+                                      const auto          &law,
                                       const PointStates   &states,
                                       const unsigned int   p,
                                       std::vector<double> &d,
@@ -406,10 +451,14 @@ namespace masonry
           law.damages(states.old(p), d_old);
           law.damages(states.older(p), d_older);
           for (unsigned int k = 0; k < d.size(); ++k)
-            error =
-              std::max(error,
-                       std::abs(d[k] -
-                                integrator.extrapolated(d_old[k], d_older[k])));
+            {
+              const double e =
+                std::abs(d[k] - integrator.extrapolated(d_old[k], d_older[k]));
+              if (!std::isfinite(e))
+                non_finite_bits |= 1u << flag;
+              else
+                error = std::max(error, e);
+            }
         };
         const BrickMaterial &material = parts.material;
         if (!material.is_linear())
@@ -440,7 +489,7 @@ namespace masonry
                                             parts.bricks.updated(p),
                                             stress);
                       damage_error(
-                        material, parts.bricks, p, d, d_old, d_older);
+                        2, material, parts.bricks, p, d, d_old, d_older);
                     }
                 }
           }
@@ -472,9 +521,12 @@ namespace masonry
                              parts.joint_points.updated(p),
                              t,
                              D);
-                damage_error(law, parts.joint_points, p, d, d_old, d_older);
+                damage_error(3, law, parts.joint_points, p, d, d_old, d_older);
               }
           }
+        gather_non_finite();
+        if (!non_finite().empty())
+          return std::numeric_limits<double>::quiet_NaN();
         return Utilities::MPI::max(error, system.comm);
       }
     } // namespace model

@@ -14,6 +14,7 @@
 #include <deal.II/lac/full_matrix.h>
 
 #include <map>
+#include <string>
 
 #include "integrator.h"
 #include "interface_element.h"
@@ -100,6 +101,15 @@ namespace masonry
           return is_initial;
         }
 
+        /**
+         * Where the last assemble() or update_states() met a number that is
+         * not finite (the same on every rank): "" when nowhere, else "the
+         * stresses of the bricks", "the tractions of the joints", "the
+         * damages of the bricks" or "the damages of the joints".
+         */
+        std::string
+        non_finite() const;
+
         /** The interface element (jumps and local matrices). */
         const InterfaceElement &
         element() const
@@ -129,10 +139,18 @@ namespace masonry
         BrickPoint
         brick_point(const unsigned int c, const double time_step) const;
 
+        /** Combines the ranks' non_finite_bits (collective). */
+        void
+        gather_non_finite();
+
         AssemblyParts    parts;
         InterfaceElement interface_element;
-        double           spacing;
-        bool             is_initial = false;
+        /** Non-finite numbers met in the last assembly or update, bits:
+         * bricks' stresses, joints' tractions, bricks' damages, joints'
+         * damages. */
+        unsigned int non_finite_bits = 0;
+        double       spacing;
+        bool         is_initial = false;
         /** A linear model's matrix is assembled once (until deletions). */
         bool matrix_valid = false;
         /** Elastic bricks with nonlinear joints: the bricks' part of the

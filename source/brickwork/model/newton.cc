@@ -35,8 +35,14 @@ namespace masonry
                          LinearSolver &solver,
                          const double  displacement,
                          const double  time_step,
-                         unsigned int &iterations) const
+                         unsigned int &iterations,
+                         std::string  &non_finite) const
       {
+        non_finite.clear();
+        const auto at = [&](const std::string &what) {
+          non_finite =
+            what + " (Newton iteration " + std::to_string(iterations) + ")";
+        };
         system.set_platen(system.u, displacement);
         System::Vector r(system.owned, system.comm),
           du(system.owned, system.comm), u_start(system.owned, system.comm);
@@ -52,7 +58,13 @@ namespace masonry
                 const double norm = r.l2_norm();
                 const double all  = system.f_int.l2_norm();
                 if (!std::isfinite(norm) || !std::isfinite(all))
-                  return false;
+                  {
+                    const std::string part = assembler.non_finite();
+                    at(!std::isfinite(system.u.l2_norm()) ?
+                         "the displacements" :
+                         (part.empty() ? "the internal forces" : part));
+                    return false;
+                  }
                 if (converged(norm, all))
                   return true;
                 if (iterations == settings.max_newton)
@@ -64,6 +76,11 @@ namespace masonry
                   }
                 catch (const std::exception &)
                   {
+                    return false;
+                  }
+                if (!std::isfinite(du.l2_norm()))
+                  {
+                    at("the solution of the linear solve");
                     return false;
                   }
                 system.zero_constraints.set_zero(du);

@@ -7,6 +7,8 @@
 
 #include <masonry/brickwork/wallette.h>
 
+#include <string>
+
 #include "assembler.h"
 #include "linear_solvers.h"
 #include "system.h"
@@ -32,7 +34,10 @@ namespace masonry
          * Move the platen to @p displacement (m) and iterate from the
          * current solution; whether the step converged, and the number of
          * @p iterations. A material or solver failure counts as no
-         * convergence (the caller cuts the step back).
+         * convergence (the caller cuts the step back). A step that failed on
+         * a number that is not finite names where in @p non_finite (else
+         * it is left empty): "the stresses of the bricks (Newton iteration
+         * 2)", ...
          */
         bool
         solve_step(System       &system,
@@ -40,7 +45,8 @@ namespace masonry
                    LinearSolver &solver,
                    const double  displacement,
                    const double  time_step,
-                   unsigned int &iterations) const;
+                   unsigned int &iterations,
+                   std::string  &non_finite) const;
 
       private:
         /** Whether the residual @p norm is small against the reactions

@@ -77,6 +77,17 @@ namespace masonry
                     Progress                      &progress,
                     double                        &next);
 
+      /**
+       * Stall detection: a run whose accepted steps are all smaller than
+       * stall_fraction x the nominal step (and than `IMPL-EX minimum step'
+       * x the nominal step, the smallest step IMPL-EX takes by design) for
+       * stall_steps steps in a row makes no progress and stops with status
+       * `stalled'. A halving chain of the default 10 cut-backs ends at
+       * 2^-10 < 1e-3, but the step grows back after two easy steps.
+       */
+      constexpr double       stall_fraction = 1e-3;
+      constexpr unsigned int stall_steps    = 50;
+
       /** How the step size follows the steps' difficulty. */
       class StepSizeControl
       {
