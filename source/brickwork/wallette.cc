@@ -251,6 +251,23 @@ namespace masonry
               << "Joints (brick pairs / face pairs): bed " << nj[0] << " / "
               << nf[0] << ", head " << nj[1] << " / " << nf[1] << ", collar "
               << nj[2] << " / " << nf[2] << "\n";
+        // every value a law computed from its inputs
+        const std::pair<const char *, std::vector<DerivedValue>> derived[] = {
+          {"brick_material", material.derived_values()},
+          {"interface_law", law.derived_values()}};
+        for (const auto &[part, values] : derived)
+          {
+            if (values.empty())
+              continue;
+            Json &out = summary["derived_values"][part];
+            pcout << "Derived values (" << part << "):\n";
+            for (const auto &v : values)
+              {
+                out[v.name] = v.value;
+                pcout << "  " << v.name << " = " << std::setprecision(6)
+                      << v.value << " " << v.unit << "  (" << v.how << ")\n";
+              }
+          }
       }
 
       std::pair<double, std::vector<double>>
