@@ -4,10 +4,12 @@
  * (issue 18, deliverables 2 and 3).
  *
  * (1) Stall: damage-plasticity bricks under implicit integration with
- * `Maximum Newton iterations = 2' and `Step growth factor = 1'. Every step
- * that needs a third iteration is halved, and nothing makes a step larger
- * again, so the steps shrink for ever (before the stall detection the run
- * crawled on with 5e-8 m steps, 1/1000 of the nominal one). It must stop
+ * `Maximum Newton iterations = 2', `Step growth factor = 1' and `Maximum
+ * cut-backs = 60'. Every step that needs a third iteration is halved, and
+ * nothing makes a step larger again, so the steps shrink for ever (before
+ * the stall detection the run crawled on with steps of 1/1000 of the
+ * nominal one and less; the bound nominal / 2^60 on a failing step is far
+ * away). It must stop
  * as `stalled' once 50 steps in a row are below 1e-3 x the nominal step:
  * checked on curve.csv, independently of the code's counter, the last 50
  * platen increments are below that floor and the step before them is not
@@ -182,6 +184,7 @@ main(int argc, char **argv)
           "set Target strain = 0.008\nset Number of steps = 80\n"
           "set Damage integration = implicit\n"
           "set Maximum Newton iterations = 2\n"
+          "set Maximum cut-backs = 60\n"
           "set Step growth factor = 1\n",
         "subsection Bond\nset Pattern = stretcher\nend\n"
           "subsection Brick material\nset Model = damage plasticity\nend\n"

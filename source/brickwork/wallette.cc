@@ -254,6 +254,23 @@ namespace masonry
               << "Joints (brick pairs / face pairs): bed " << nj[0] << " / "
               << nf[0] << ", head " << nj[1] << " / " << nf[1] << ", collar "
               << nj[2] << " / " << nf[2] << "\n";
+        // every value a law computed from its inputs
+        const std::pair<const char *, std::vector<DerivedValue>> derived[] = {
+          {"brick_material", material.derived_values()},
+          {"interface_law", law.derived_values()}};
+        for (const auto &[part, values] : derived)
+          {
+            if (values.empty())
+              continue;
+            Json &out = summary["derived_values"][part];
+            pcout << "Derived values (" << part << "):\n";
+            for (const auto &v : values)
+              {
+                out[v.name] = v.value;
+                pcout << "  " << v.name << " = " << std::setprecision(6)
+                      << v.value << " " << v.unit << "  (" << v.how << ")\n";
+              }
+          }
       }
 
       std::pair<double, std::vector<double>>
@@ -492,7 +509,12 @@ namespace masonry
               {
                 system.u = u_converged;
                 ++statistics.total_cutbacks;
-                if (++consecutive_cutbacks > settings.protocol.max_cutbacks)
+                // a converged step resets the consecutive count, so the
+                // step is also bounded below: otherwise tiny converged
+                // steps between failures halve it without end
+                if (++consecutive_cutbacks > settings.protocol.max_cutbacks ||
+                    progress.increment <
+                      std::ldexp(nominal, -int(settings.protocol.max_cutbacks)))
                   {
                     std::ostringstream m;
                     if (!non_finite.empty())
@@ -500,8 +522,9 @@ namespace masonry
                         // a smaller step did not help: a bad model
                         m << "a number that is not finite (nan or inf) in "
                           << non_finite << " at platen displacement " << next
-                          << " m, also after " << settings.protocol.max_cutbacks
-                          << " halvings of the step (last converged: "
+                          << " m, also with a step of " << taken << " m after "
+                          << consecutive_cutbacks - 1
+                          << " consecutive halvings (last converged: "
                           << applied << " m); check "
                           << likely_entries(non_finite)
                           << "; results up to there are written";
@@ -510,9 +533,12 @@ namespace masonry
                     else
                       {
                         m << "no convergence at platen displacement " << next
-                          << " m after " << settings.protocol.max_cutbacks
-                          << " halvings of the step (last converged: "
-                          << applied << " m); results up to there are written";
+                          << " m with a step of " << taken << " m after "
+                          << consecutive_cutbacks - 1
+                          << " consecutive halvings (`Maximum cut-backs' = "
+                          << settings.protocol.max_cutbacks
+                          << "; last converged: " << applied
+                          << " m); results up to there are written";
                         status = "not converged";
                       }
                     message = m.str();

@@ -197,6 +197,7 @@ namespace masonry
                             ExcParameter("Mortar Young's modulus", e.what()));
               }
           }
+        penalties_derived  = E_m > 0;
         p.normal_stiffness = normal_stiffness;
         p.shear_stiffness  = shear_stiffness;
         law                = std::make_unique<CompositeJoint>(make(1.));
@@ -204,6 +205,45 @@ namespace masonry
         // snap-back limits must hold there too (checked here, not in the
         // middle of an assembly)
         make(1.8);
+      }
+
+      std::vector<DerivedValue>
+      derived_values() const override
+      {
+        std::vector<DerivedValue> v;
+        if (penalties_derived)
+          {
+            v.push_back({"normal_stiffness",
+                         normal_stiffness,
+                         "Pa/m",
+                         "k_n = E_b E_m / (h_m (E_b - E_m)) (Lourenco-Rots, "
+                         "enlarged units)"});
+            v.push_back({"shear_stiffness",
+                         shear_stiffness,
+                         "Pa/m",
+                         "k_s = G_b G_m / (h_m (G_b - G_m)), G = E / (2 (1 + "
+                         "nu))"});
+          }
+        const double sp = p.cap_strength;
+        v.push_back({"cap_initial_strength",
+                     p.cap_initial_ratio * sp,
+                     "Pa",
+                     "sbar_i = sbar_p / 3: start of the cap hardening"});
+        v.push_back({"cap_middle_strength",
+                     p.cap_middle_ratio * sp,
+                     "Pa",
+                     "sbar_m = sbar_p / 2: end of the parabolic softening"});
+        v.push_back({"cap_residual_strength",
+                     p.cap_residual_ratio * sp,
+                     "Pa",
+                     "sbar_r = sbar_p / 7: residual"});
+        v.push_back({"cap_middle_jump",
+                     law->cap_middle_jump(),
+                     "m",
+                     "kappa_m = kappa_p + G_fc / (sbar_p - sbar_r + (sbar_m "
+                     "- sbar_p) / 3 + (sbar_m - sbar_r)^2 / (2 (sbar_p - "
+                     "sbar_m)))"});
+        return v;
       }
 
       std::vector<StateVariable>
@@ -313,7 +353,9 @@ namespace masonry
         return CompositeJoint(p);
       }
 
-      CompositeJoint::Parameters      p;
+      CompositeJoint::Parameters p;
+      /** Whether k_n and k_s come from the moduli. */
+      bool                            penalties_derived = false;
       std::unique_ptr<CompositeJoint> law;
     };
   } // namespace brickwork

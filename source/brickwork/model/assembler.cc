@@ -364,6 +364,7 @@ namespace masonry
         std::array<Local3, 4>  jumps, tractions;
         std::array<Local33, 4> tangents;
         std::vector<double>    damages(law.damage_names().size());
+        const Local33          elastic_tangent = law.elastic_tangent();
         for (unsigned int n = 0; n < faces.size(); ++n)
           {
             const auto &face = faces[n];
@@ -410,6 +411,10 @@ namespace masonry
                                     tangents,
                                     fi,
                                     with_matrix ? &ki : nullptr);
+            // the matrix stays the initial one (its factorisation is kept)
+            // only while no point is damaged and every tangent is the
+            // elastic one: a law without damage (plastic slip) changes the
+            // tangent too
             if (is_initial)
               for (unsigned int q = 0; q < n_quad; ++q)
                 {
@@ -419,6 +424,8 @@ namespace masonry
                   for (const double d : damages)
                     if (d > 0)
                       is_initial = false;
+                  if (tangents[q] != elastic_tangent)
+                    is_initial = false;
                 }
             if (!all_finite(fi))
               non_finite_bits |= 2u;
