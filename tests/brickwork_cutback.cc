@@ -9,7 +9,8 @@
  * --validate as one line naming the file, the line and the entry: a mesh
  * that does not fit the english bond's closers, a fracture energy below
  * f_t^2 / (2 k_n) (the law would snap back at a point), a sideways platen
- * motion with frictionless platens.
+ * motion with frictionless platens, an english bond whose headers (0.31 m
+ * with the joint) do not span two stretcher widths (2 x 0.1125 m).
  */
 #include "brickwork_tests.h"
 #include "tests.h"
@@ -105,6 +106,16 @@ main(int argc, char **argv)
                              "  set Platen direction = 1, 0, 0\n"
                              "end\n");
   testing::check_error(testing::run({"--validate", "platen.prm"}));
+  // the bond's own check (a header must span two stretcher widths), naming
+  // the entry the file sets
+  testing::write_file("english.prm",
+                      head + "subsection Wallette\n"
+                             "  set Brick length = 0.3\n"
+                             "end\n"
+                             "subsection Bond\n"
+                             "  set Pattern = english\n"
+                             "end\n");
+  testing::check_error(testing::run({"--validate", "english.prm"}));
   testing::write_file("good.prm", head);
   const testing::Result r = testing::run({"--validate", "good.prm"});
   std::cout << "default wallette: exit code " << r.exit_code << ", " << r.out;

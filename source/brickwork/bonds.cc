@@ -6,6 +6,7 @@
 #include <masonry/core/parameters.h>
 
 #include <cmath>
+#include <sstream>
 
 namespace masonry
 {
@@ -164,12 +165,28 @@ namespace masonry
       std::vector<Box>
       layout(const WalletteSize &s) const override
       {
-        AssertThrow(std::abs(s.length - 2 * s.width) <= 1e-9 * s.length,
-                    dealii::ExcMessage(
-                      "the english bond needs brick length + joint = 2 x "
-                      "(brick width + joint); got " +
-                      std::to_string(s.length) + " m and " +
-                      std::to_string(s.width) + " m"));
+        // headers lie across the wall: a header (length + joint) must
+        // match two stretcher widths (width + joint). The error names the
+        // first of the three entries that the file sets (the bricks are
+        // laid while `subsection Wallette' is parsed, so with its line).
+        if (std::abs(s.length - 2 * s.width) > 1e-9 * s.length)
+          {
+            std::string blame = "Brick width";
+            for (const char *e :
+                 {"Brick width", "Brick length", "Joint thickness"})
+              if (parameter_is_set("Wallette/" + std::string(e)))
+                {
+                  blame = e;
+                  break;
+                }
+            std::ostringstream m;
+            m << "the english bond needs brick length + joint = 2 x (brick "
+                 "width + joint); got "
+              << s.length << " m and 2 x " << s.width
+              << " m (set Brick length, Brick width and Joint thickness to "
+                 "match)";
+            throw ExcParameter(blame, m.str());
+          }
         std::vector<Box> boxes;
         for (unsigned int c = 0; c < s.courses; ++c)
           {

@@ -464,46 +464,6 @@ namespace masonry
         catch (...)
           {}
 
-    // combinations that make a degenerate wallette: the english bond lays
-    // headers across the wall, so a header (length + joint) must match two
-    // stretcher widths (width + joint)
-    try
-      {
-        if (get(prm, "Analysis") == "wallette" &&
-            get(prm, "Bond/Pattern") == "english")
-          {
-            auto value = [&](const std::string &path) {
-              return dealii::Utilities::string_to_double(get(prm, path));
-            };
-            const double joint  = value("Wallette/Joint thickness");
-            const double length = value("Wallette/Brick length") + joint;
-            const double width  = value("Wallette/Brick width") + joint;
-            std::string  blame  = "Wallette/Brick width";
-            for (const char *e : {"Wallette/Brick width",
-                                  "Wallette/Brick length",
-                                  "Wallette/Joint thickness"})
-              if (parameter_is_set(e))
-                {
-                  blame = e;
-                  break;
-                }
-            AssertThrow(std::abs(length - 2 * width) <= 1e-9 * length,
-                        dealii::ExcMessage(
-                          parameter_location(blame) + ": entry '" + blame +
-                          "': the english bond needs brick length + joint = "
-                          "2 x (brick width + joint); got " +
-                          number(length) + " m and 2 x " + number(width) +
-                          " m (set Brick length, Brick width and Joint "
-                          "thickness to match)"));
-          }
-      }
-    catch (const dealii::ExcMessage &)
-      {
-        throw;
-      }
-    catch (...)
-      {}
-
     check_function(prm, "Geometry model", "Thickness", 1, size, 100, "m", true);
     for (const std::string analysis :
          {"Settlement", "Limit load", "Minimum thickness"})

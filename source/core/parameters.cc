@@ -22,6 +22,9 @@ namespace masonry
     {
       std::string                     filename;
       std::map<std::string, Location> entries;
+      /** Where each line of the text of read_parameter_text() (the file
+       * with its includes inlined) comes from. */
+      std::vector<Location> text_lines;
     };
 
     Locations &
@@ -214,31 +217,58 @@ namespace masonry
     }
   } // namespace
 
+  namespace
+  {
+    /**
+     * The lines of @p file into @p text, with the files it includes inlined
+     * in their place (deal.II would read those itself, byte-order mark and
+     * all) and each line's origin into @p origin.
+     */
+    void
+    append_text(const std::string     &file,
+                const std::string     &include_line,
+                std::string           &text,
+                std::vector<Location> &origin)
+    {
+      const std::vector<std::string> lines = read_lines(file, include_line);
+      for (unsigned int i = 0; i < lines.size(); ++i)
+        {
+          const std::string &line    = lines[i];
+          const std::string  code    = strip_comment(line);
+          const std::string  trimmed = trim(code);
+          const std::string  here    = file + ":" + std::to_string(i + 1);
+          origin.push_back(Location{file, i + 1});
+          if (is_include(trimmed))
+            {
+              text += '\n';
+              append_text(trim(trimmed.substr(7)), here, text, origin);
+              continue;
+            }
+          // white space inside a value is not significant (two spaces in
+          // `springing  right`), except on continued lines
+          if (is_set(trimmed) && code.find('=') != std::string::npos &&
+              (trimmed.empty() || trimmed.back() != '\\'))
+            {
+              const auto eq = trimmed.find('=');
+              text += trimmed.substr(0, eq + 1) + " " +
+                      collapse_spaces(trimmed.substr(eq + 1));
+              if (code.size() < line.size())
+                text += " " + line.substr(code.size());
+            }
+          else
+            text += line;
+          text += '\n';
+        }
+    }
+  } // namespace
+
   std::string
   read_parameter_text(const std::string &filename)
   {
-    // the includes are checked first: deal.II follows them without a limit
+    // the includes are checked first (cycles, directories, missing files)
     record_parameter_locations(filename);
     std::string text;
-    for (const auto &line : read_lines(filename, ""))
-      {
-        const std::string code    = strip_comment(line);
-        const std::string trimmed = trim(code);
-        // white space inside a value is not significant (two spaces in
-        // `springing  right`), except on continued lines
-        if (is_set(trimmed) && code.find('=') != std::string::npos &&
-            (trimmed.empty() || trimmed.back() != '\\'))
-          {
-            const auto eq = trimmed.find('=');
-            text += trimmed.substr(0, eq + 1) + " " +
-                    collapse_spaces(trimmed.substr(eq + 1));
-            if (code.size() < line.size())
-              text += " " + line.substr(code.size());
-          }
-        else
-          text += line;
-        text += '\n';
-      }
+    append_text(filename, "", text, locations().text_lines);
     return text;
   }
 
@@ -291,12 +321,33 @@ namespace masonry
   }
 
   std::string
-  explain_parse_error(const std::string &message)
+  explain_parse_error(const std::string &raw)
   {
+    std::string message = raw;
     // "file:line: text", where file is the parameter file or one it
     // includes; no std::regex: values may be megabytes long
     const Locations &l = locations();
     std::string      file;
+    // a line of the text with the includes inlined: name its own file
+    if (!l.filename.empty() && message.rfind(l.filename + ":", 0) == 0)
+      {
+        const std::size_t end = message.find(':', l.filename.size() + 1);
+        try
+          {
+            const unsigned int n = dealii::Utilities::string_to_int(
+              message.substr(l.filename.size() + 1,
+                             end - l.filename.size() - 1));
+            if (end != std::string::npos && n >= 1 &&
+                n <= l.text_lines.size() &&
+                (l.text_lines[n - 1].file != l.filename ||
+                 l.text_lines[n - 1].line != n))
+              message = l.text_lines[n - 1].file + ":" +
+                        std::to_string(l.text_lines[n - 1].line) +
+                        raw.substr(end);
+          }
+        catch (...)
+          {}
+      }
     if (!l.filename.empty() && message.rfind(l.filename + ":", 0) == 0)
       file = l.filename;
     else
