@@ -118,9 +118,13 @@ namespace masonry
         prm.declare_entry("Maximum cut-backs",
                           "10",
                           Integer(0, 60),
-                          "Consecutive halvings of a step before the run "
-                          "stops with status `not converged' (results up to "
-                          "the last converged step are written).");
+                          "Halvings of a step that does not converge: the "
+                          "run stops with status `not converged' (results up "
+                          "to the last converged step are written) when a "
+                          "step fails after this many consecutive halvings or "
+                          "when it is already smaller than the nominal step "
+                          "/ 2^N (tiny converged steps between failures "
+                          "would otherwise halve it without end).");
         prm.declare_entry("Step growth factor",
                           "2",
                           Double(1),

@@ -519,12 +519,20 @@ namespace masonry
               {
                 system.u = u_converged;
                 ++statistics.total_cutbacks;
-                if (++consecutive_cutbacks > settings.protocol.max_cutbacks)
+                // a converged step resets the consecutive count, so the
+                // step is also bounded below: otherwise tiny converged
+                // steps between failures halve it without end
+                if (++consecutive_cutbacks > settings.protocol.max_cutbacks ||
+                    progress.increment <
+                      std::ldexp(nominal, -int(settings.protocol.max_cutbacks)))
                   {
                     std::ostringstream m;
                     m << "no convergence at platen displacement " << next
-                      << " m after " << settings.protocol.max_cutbacks
-                      << " halvings of the step (last converged: " << applied
+                      << " m with a step of " << taken << " m after "
+                      << consecutive_cutbacks - 1
+                      << " consecutive halvings (`Maximum cut-backs' = "
+                      << settings.protocol.max_cutbacks
+                      << "; last converged: " << applied
                       << " m); results up to there are written";
                     status  = "not converged";
                     message = m.str();

@@ -374,6 +374,10 @@ namespace masonry
                                     tangents,
                                     fi,
                                     with_matrix ? &ki : nullptr);
+            // the matrix stays the initial one (its factorisation is kept)
+            // only while no point is damaged and every tangent is the
+            // elastic one: a law without damage (plastic slip) changes the
+            // tangent too
             if (is_initial)
               for (unsigned int q = 0; q < n_quad; ++q)
                 {
@@ -384,6 +388,8 @@ namespace masonry
                   for (const double d : damages)
                     if (d > 0)
                       is_initial = false;
+                  if (tangents[q] != law.elastic_tangent())
+                    is_initial = false;
                 }
             system.f_int.add(face.dofs, fi);
             if (with_matrix)
