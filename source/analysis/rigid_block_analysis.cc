@@ -141,6 +141,18 @@ namespace masonry
                         "support but not penetrate or slide on it); "
                         "`bonded`: the block follows the support motion "
                         "exactly (seed eq. 8), a rigid clamp.");
+      prm.declare_entry("Implied contact rows",
+                        "leave out",
+                        dealii::Patterns::Selection("leave out|keep"),
+                        "Where the joints have no plastic multipliers (`no "
+                        "tension no sliding', bonded supports), the LP rows "
+                        "of an interface that follow from its other rows "
+                        "(on a plane interface, the tangential jumps beyond "
+                        "three; the normal jump at the middle of a straight "
+                        "edge) are left out: the same optimum from a smaller "
+                        "LP, with the contact forces carried by the points "
+                        "kept (the others report zero). `keep' writes every "
+                        "row. Unitless choice.");
       prm.declare_entry("Surface load",
                         "0",
                         dealii::Patterns::Anything(),
@@ -179,6 +191,7 @@ namespace masonry
       options.n_quadrature    = prm.get_integer("Quadrature points");
       options.supported_edges = split_labels(prm.get("Supported edges"));
       bonded_supports         = prm.get("Support contact") == "bonded";
+      leave_out_implied_rows  = prm.get("Implied contact rows") == "leave out";
       try
         {
           surface_load.initialize("x,y,z", prm.get("Surface load"), {});
