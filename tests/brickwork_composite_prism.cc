@@ -112,5 +112,22 @@ main(int argc, char **argv)
     check(relative(summary["initial_modulus"].as_number(), H / c) < 1e-6,
           "stack prism: penalties from E_b, E_m, nu and h_m replace the "
           "given Normal stiffness");
+    // the derived values in summary.json and log.txt: k_s from the shear
+    // moduli G = E / (2 (1 + nu)) written out here
+    const double Gb = 10e9 / 2.3, Gm = 2e9 / 2.4,
+                 ks = Gb * Gm / (0.01 * (Gb - Gm));
+    auto &d         = summary["derived_values"]["interface_law"];
+    check(relative(d["normal_stiffness"].as_number(), 2.5e11) < 1e-12 &&
+            relative(d["shear_stiffness"].as_number(), ks) < 1e-12,
+          "summary.json: derived k_n = 2.5e11 Pa/m and k_s = 1.0309e11 "
+          "Pa/m");
+    check(relative(d["cap_middle_jump"].as_number(), km) < 1e-12,
+          "summary.json: derived kappa_m from G_fc");
+    std::ifstream     log("results/prism_moduli/log.txt");
+    std::stringstream text;
+    text << log.rdbuf();
+    check(text.str().find("normal_stiffness = 2.5e+11 Pa/m") !=
+            std::string::npos,
+          "log.txt: the derived normal stiffness is printed");
   }
 }

@@ -306,6 +306,44 @@ namespace masonry
       }
 
       double
+      compressive_strength() const override
+      {
+        return f_c;
+      }
+
+      double
+      tensile_strength() const override
+      {
+        return f_t;
+      }
+
+      double
+      tensile_fracture_energy() const override
+      {
+        return G_f;
+      }
+
+      std::vector<DerivedValue>
+      derived_values() const override
+      {
+        return {{"alpha",
+                 alpha,
+                 "-",
+                 "(rho - 1) / (2 rho - 1) of the compressive measure "
+                 "(Lubliner), rho = `Biaxial to uniaxial strength ratio'"},
+                {"elastic_limit_stress",
+                 ratio * f_c,
+                 "Pa",
+                 "`Elastic limit ratio' x `Compressive strength'"},
+                {"confinement_coefficient",
+                 (1 + 2 * alpha) / (1 - alpha),
+                 "-",
+                 "k = (1 + 2 alpha) / (1 - alpha): the rise of the "
+                 "compressive measure's strength per unit of equal lateral "
+                 "pressure, |sigma_1| = f_c + k p"}};
+      }
+
+      double
       poissons_ratio() const override
       {
         return nu;

@@ -184,6 +184,12 @@ namespace masonry
     InterfaceLaw::damages(ConstStateView, dealii::ArrayView<double>) const
     {}
 
+    std::vector<DerivedValue>
+    InterfaceLaw::derived_values() const
+    {
+      return {};
+    }
+
     /** Linear joints: t = diag(k_n, k_s, k_s) [u]. */
     class ElasticInterface : public InterfaceLaw
     {
@@ -545,6 +551,30 @@ namespace masonry
     void
     BrickMaterial::damages(ConstStateView, dealii::ArrayView<double>) const
     {}
+
+    std::vector<DerivedValue>
+    BrickMaterial::derived_values() const
+    {
+      return {};
+    }
+
+    double
+    BrickMaterial::compressive_strength() const
+    {
+      return 0;
+    }
+
+    double
+    BrickMaterial::tensile_strength() const
+    {
+      return 0;
+    }
+
+    double
+    BrickMaterial::tensile_fracture_energy() const
+    {
+      return 0;
+    }
 
     dealii::SymmetricTensor<4, 3>
     BrickMaterial::elastic_stiffness() const

@@ -49,6 +49,7 @@ namespace masonry
         Wallette(const std::vector<Box> &boxes,
                  const BrickMaterial    &material,
                  const InterfaceLaw     &law,
+                 const InterfaceLaw     *splitting_law,
                  const WalletteSettings &settings,
                  std::vector<std::unique_ptr<postprocess::Postprocessor>>
                             &postprocessors,
@@ -93,8 +94,10 @@ namespace masonry
                const std::string &message,
                const double       seconds);
 
-        const BrickMaterial               &material;
-        const InterfaceLaw                &law;
+        const BrickMaterial &material;
+        const InterfaceLaw  &law;
+        /** The splitting interfaces' law, nullptr: none. */
+        const InterfaceLaw                *splitting_law;
         const WalletteSettings            &settings;
         RunContext                        &context;
         ConditionalOStream                &pcout;
@@ -103,12 +106,12 @@ namespace masonry
         System                             system;
         Joints                             joints;
         Specimen                           specimen;
-        PointStates                        bricks, joint_points;
-        std::unique_ptr<Integrator>        integrator;
-        std::unique_ptr<LinearSolver>      solver;
-        std::unique_ptr<Protocol>          protocol;
-        std::unique_ptr<StepSizeControl>   step_control;
-        std::unique_ptr<Assembler>         assembler;
+        PointStates                      bricks, joint_points, splitting_points;
+        std::unique_ptr<Integrator>      integrator;
+        std::unique_ptr<LinearSolver>    solver;
+        std::unique_ptr<Protocol>        protocol;
+        std::unique_ptr<StepSizeControl> step_control;
+        std::unique_ptr<Assembler>       assembler;
         std::vector<std::unique_ptr<postprocess::Postprocessor>>
                                   &postprocessors;
         std::vector<std::string>   postprocessor_data;
@@ -122,12 +125,14 @@ namespace masonry
         const std::vector<Box> &boxes,
         const BrickMaterial    &material,
         const InterfaceLaw     &law,
+        const InterfaceLaw     *splitting_law,
         const WalletteSettings &settings,
         std::vector<std::unique_ptr<postprocess::Postprocessor>>
                    &postprocessors,
         RunContext &context)
         : material(material)
         , law(law)
+        , splitting_law(splitting_law)
         , settings(settings)
         , context(context)
         , pcout(context.pcout)
@@ -158,7 +163,7 @@ namespace masonry
                                  settings.specimen);
 
         // point states: 8 per cell, 4 per joint face, as the laws declare
-        std::vector<unsigned int> owned_bricks, owned_joints;
+        std::vector<unsigned int> owned_bricks, owned_joints, owned_splitting;
         for (const auto &cell : triangulation.active_cell_iterators())
           if (cell->is_locally_owned())
             {
@@ -177,7 +182,9 @@ namespace masonry
         for (unsigned int n = 0; n < joints.faces.size(); ++n)
           if (joints.faces[n].owned)
             for (unsigned int q = 0; q < InterfaceElement::n_points; ++q)
-              owned_joints.push_back(InterfaceElement::n_points * n + q);
+              (joints.faces[n].type == splitting_type ? owned_splitting :
+                                                        owned_joints)
+                .push_back(InterfaceElement::n_points * n + q);
         std::vector<double> initial(
           material.is_linear() ? 0 :
                                  n_state_values(material.state_variables()));
@@ -191,6 +198,23 @@ namespace masonry
                                   joints.faces.size(),
                                 initial,
                                 owned_joints);
+        AssertThrow(splitting_law ||
+                      joints.n_faces_of_type[splitting_type] == 0,
+                    ExcMessage("internal error: splitting interfaces "
+                               "without a law"));
+        // the splitting interfaces' states, indexed like the joints' (only
+        // those of splitting faces are used)
+        initial.clear();
+        if (splitting_law)
+          {
+            initial.assign(n_state_values(splitting_law->state_variables()),
+                           0.);
+            splitting_law->initial_state(initial);
+          }
+        splitting_points.initialize(InterfaceElement::n_points *
+                                      joints.faces.size(),
+                                    initial,
+                                    owned_splitting);
 
         assembler = std::make_unique<Assembler>(AssemblyParts{system,
                                                               joints,
@@ -199,7 +223,9 @@ namespace masonry
                                                               law,
                                                               *integrator,
                                                               bricks,
-                                                              joint_points},
+                                                              joint_points,
+                                                              splitting_law,
+                                                              splitting_points},
                                                 settings.mesh.gauss,
                                                 spacing[0]);
         assembler->make_elastic_caches();
@@ -220,6 +246,8 @@ namespace masonry
                                                      assembler->element(),
                                                      bricks,
                                                      joint_points,
+                                                     splitting_law,
+                                                     splitting_points,
                                                      *protocol,
                                                      curve,
                                                      progress});
@@ -251,24 +279,59 @@ namespace masonry
               << "Joints (brick pairs / face pairs): bed " << nj[0] << " / "
               << nf[0] << ", head " << nj[1] << " / " << nf[1] << ", collar "
               << nj[2] << " / " << nf[2] << "\n";
+        if (splitting_law)
+          {
+            const unsigned int t                   = splitting_type;
+            summary["n_split_units"]               = geometry.n_split_units;
+            summary["n_splitting_interface_faces"] = nf[t];
+            pcout << "Splitting interfaces: " << geometry.n_split_units
+                  << " of " << geometry.n_bricks << " units split, " << nf[t]
+                  << " face pairs\n";
+          }
+        // every value a law computed from its inputs
+        const std::pair<const char *, std::vector<DerivedValue>> derived[] = {
+          {"brick_material", material.derived_values()},
+          {"interface_law", law.derived_values()},
+          {"splitting_interfaces",
+           splitting_law ? splitting_law->derived_values() :
+                           std::vector<DerivedValue>()}};
+        for (const auto &[part, values] : derived)
+          {
+            if (values.empty())
+              continue;
+            Json &out = summary["derived_values"][part];
+            pcout << "Derived values (" << part << "):\n";
+            for (const auto &v : values)
+              {
+                out[v.name] = v.value;
+                pcout << "  " << v.name << " = " << std::setprecision(6)
+                      << v.value << " " << v.unit << "  (" << v.how << ")\n";
+              }
+          }
       }
 
       std::pair<double, std::vector<double>>
       Wallette::max_damages() const
       {
         const MPI_Comm      comm = context.mpi_communicator;
-        std::vector<double> d(law.damage_names().size());
+        std::vector<double> d;
         double              joint = 0;
+        // joints and splitting interfaces
         for (unsigned int n = 0; n < joints.faces.size(); ++n)
           if (joints.faces[n].owned)
-            for (unsigned int q = 0; q < InterfaceElement::n_points; ++q)
-              {
-                law.damages(joint_points.old(InterfaceElement::n_points * n +
-                                             q),
-                            d);
-                for (const double x : d)
-                  joint = std::max(joint, x);
-              }
+            {
+              const bool split      = joints.faces[n].type == splitting_type;
+              const InterfaceLaw &l = split ? *splitting_law : law;
+              const PointStates  &states =
+                split ? splitting_points : joint_points;
+              d.resize(l.damage_names().size());
+              for (unsigned int q = 0; q < InterfaceElement::n_points; ++q)
+                {
+                  l.damages(states.old(InterfaceElement::n_points * n + q), d);
+                  for (const double x : d)
+                    joint = std::max(joint, x);
+                }
+            }
         const unsigned int  n_brick = material.damage_names().size();
         std::vector<double> brick(n_brick, 0.), b(n_brick);
         if (!material.is_linear())
@@ -295,7 +358,9 @@ namespace masonry
         for (unsigned int n = 0; n < joints.faces.size(); ++n)
           if (joints.faces[n].owned)
             for (unsigned int q = 0; q < InterfaceElement::n_points; ++q)
-              joint_points.accept(InterfaceElement::n_points * n + q, older);
+              (joints.faces[n].type == splitting_type ? splitting_points :
+                                                        joint_points)
+                .accept(InterfaceElement::n_points * n + q, older);
         if (!material.is_linear())
           for (const auto &cell : triangulation.active_cell_iterators())
             if (cell->is_locally_owned() &&
@@ -351,6 +416,7 @@ namespace masonry
                 specimen,
                 bricks,
                 joint_points,
+                splitting_points,
                 *solver,
                 *step_control,
                 system,
@@ -453,12 +519,20 @@ namespace masonry
               {
                 system.u = u_converged;
                 ++statistics.total_cutbacks;
-                if (++consecutive_cutbacks > settings.protocol.max_cutbacks)
+                // a converged step resets the consecutive count, so the
+                // step is also bounded below: otherwise tiny converged
+                // steps between failures halve it without end
+                if (++consecutive_cutbacks > settings.protocol.max_cutbacks ||
+                    progress.increment <
+                      std::ldexp(nominal, -int(settings.protocol.max_cutbacks)))
                   {
                     std::ostringstream m;
                     m << "no convergence at platen displacement " << next
-                      << " m after " << settings.protocol.max_cutbacks
-                      << " halvings of the step (last converged: " << applied
+                      << " m with a step of " << taken << " m after "
+                      << consecutive_cutbacks - 1
+                      << " consecutive halvings (`Maximum cut-backs' = "
+                      << settings.protocol.max_cutbacks
+                      << "; last converged: " << applied
                       << " m); results up to there are written";
                     status  = "not converged";
                     message = m.str();
@@ -563,7 +637,7 @@ namespace masonry
         if (!material.is_linear())
           summary["cell_evaluations_elastic_fraction"] =
             elastic_fraction(a.n_elastic_cells, a.n_material_cells);
-        if (!law.is_linear())
+        if (!law.is_linear() || splitting_law)
           summary["interface_evaluations_elastic_fraction"] =
             elastic_fraction(a.n_elastic_interfaces, a.n_law_interfaces);
         summary["seconds"]          = seconds;
@@ -589,11 +663,15 @@ namespace masonry
       const InterfaceLaw                                       &law,
       const WalletteSettings                                   &settings,
       std::vector<std::unique_ptr<postprocess::Postprocessor>> &postprocessors,
-      RunContext                                               &context)
+      RunContext                                               &context,
+      const InterfaceLaw                                       *splitting_law)
     {
       check_mesh(boxes, settings.mesh);
+      AssertThrow(!settings.mesh.split_units || splitting_law,
+                  ExcMessage("internal error: split units need the "
+                             "splitting interfaces' law"));
       Wallette wallette(
-        boxes, material, law, settings, postprocessors, context);
+        boxes, material, law, splitting_law, settings, postprocessors, context);
       wallette.run();
     }
   } // namespace brickwork

@@ -213,6 +213,27 @@ namespace masonry
       /** The values of damage_names() for @p state. */
       virtual void
       damages(ConstStateView state, dealii::ArrayView<double> values) const;
+
+      /**
+       * The values this material computed from its inputs (see
+       * DerivedValue); none by default.
+       */
+      virtual std::vector<DerivedValue>
+      derived_values() const;
+
+      /**
+       * The unit's uniaxial strengths (Pa) and tensile fracture energy
+       * (J/m^2) for laws that derive from them (the splitting interfaces);
+       * 0: the material has none (elastic).
+       */
+      virtual double
+      compressive_strength() const;
+      /** See compressive_strength(). */
+      virtual double
+      tensile_strength() const;
+      /** See compressive_strength(). */
+      virtual double
+      tensile_fracture_energy() const;
     };
   } // namespace brickwork
 } // namespace masonry

@@ -160,6 +160,13 @@ namespace masonry
       virtual void
       damages(ConstStateView state, dealii::ArrayView<double> values) const;
 
+      /**
+       * The values this law computed from its inputs (see DerivedValue);
+       * none by default.
+       */
+      virtual std::vector<DerivedValue>
+      derived_values() const;
+
       /** Whether the law is linear (tangent independent of the state). */
       virtual bool
       is_linear() const

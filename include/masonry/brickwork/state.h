@@ -41,6 +41,24 @@ namespace masonry
      */
     std::vector<std::string>
     component_names(const std::vector<StateVariable> &variables);
+
+    /**
+     * A value a law computes from its inputs (a penalty from the moduli, a
+     * strength from another strength, ...): printed in log.txt and written
+     * to summary.json under `derived_values', so that a run shows every
+     * number it used that was not given.
+     */
+    struct DerivedValue
+    {
+      /** Name in snake_case (the key in summary.json). */
+      std::string name;
+      /** The value in SI units. */
+      double value = 0;
+      /** Its unit ("Pa", "Pa/m", "m", "-", ...). */
+      std::string unit;
+      /** How it was obtained (formula and inputs), for log.txt. */
+      std::string how;
+    };
   } // namespace brickwork
 } // namespace masonry
 

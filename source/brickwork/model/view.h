@@ -40,8 +40,11 @@ namespace masonry
         const InterfaceLaw     &law;
         const InterfaceElement &element;
         /** Brick points (8 c + q) and joint points (4 n + q). */
-        const PointStates             &bricks;
-        const PointStates             &joint_points;
+        const PointStates &bricks;
+        const PointStates &joint_points;
+        /** The splitting interfaces' law (nullptr: none) and points. */
+        const InterfaceLaw            *splitting_law;
+        const PointStates             &splitting_points;
         const Protocol                &protocol;
         const std::vector<CurvePoint> &curve;
         const Progress                &progress;
