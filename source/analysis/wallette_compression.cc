@@ -7,6 +7,7 @@
 #include <masonry/brickwork/bond.h>
 #include <masonry/brickwork/brick_material.h>
 #include <masonry/brickwork/interface_law.h>
+#include <masonry/brickwork/postprocessor.h>
 #include <masonry/brickwork/wallette.h>
 #include <masonry/core/parameters.h>
 
@@ -14,7 +15,6 @@
 
 #include <cmath>
 
-#include "../brickwork/postprocess/postprocessor.h"
 
 namespace masonry
 {

@@ -52,6 +52,15 @@ namespace masonry
         void
         make_constraints();
 
+        /** The solution with every relevant entry on this rank. */
+        Vector
+        ghosted_solution() const
+        {
+          Vector v(owned, relevant, comm);
+          v = u;
+          return v;
+        }
+
         /** The platen displacement @p disp (m, along the direction) into
          * the platen entries of @p v. */
         void

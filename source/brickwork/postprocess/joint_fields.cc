@@ -13,7 +13,7 @@
 #include <iomanip>
 #include <sstream>
 
-#include "postprocessor.h"
+#include "builtin.h"
 
 namespace masonry
 {
@@ -85,8 +85,8 @@ namespace masonry
                         "joint_type_bed0_head1_collar2"});
           std::vector<std::vector<double>> values(names.size(),
                                                   std::vector<double>(n, 0));
-          const System::Vector             ghosted = view.ghosted_solution();
-          std::vector<double>              reported(n_reported);
+          const System::Vector ghosted = view.system.ghosted_solution();
+          std::vector<double>  reported(n_reported);
           for (unsigned int i = 0; i < n; ++i)
             if (faces[i].owned)
               {
