@@ -15,6 +15,7 @@
 
 #include <cmath>
 
+#include "../brickwork/laws/splitting.h"
 
 namespace masonry
 {
@@ -216,6 +217,48 @@ namespace masonry
           "`Interface law'; `bonded': the bricks share the vertices of "
           "coincident faces, so the wallette is one continuum without "
           "joints (a perfectly bonded reference).");
+        prm.declare_entry(
+          "Splitting interfaces",
+          "false",
+          Bool(),
+          "Potential vertical splitting cracks: each unit is meshed as two "
+          "halves joined by a zero-thickness interface through its middle, "
+          "normal to its longer horizontal side (in line with the head "
+          "joints of the next course for a stretcher; units whose half is "
+          "not a whole number of elements, such as closers, stay whole). "
+          "The interface follows the composite law with the unit's tensile "
+          "strength and fracture energy as its tension cut-off, Coulomb "
+          "friction through the unit's uniaxial strengths (c = sqrt(f_c "
+          "f_t) / 2, tan(phi) = (f_c - f_t) / (2 sqrt(f_c f_t))), G_II = 10 "
+          "G_f and no cap (10 f_c); the values used are printed in log.txt "
+          "and summary.json (derived_values / splitting_interfaces). Needs "
+          "`Joints = interfaces'.");
+        prm.declare_entry("Splitting tensile strength",
+                          "0",
+                          Double(0),
+                          "Tensile strength of the units across a splitting "
+                          "interface, Pa (>= 0; 0: the brick material's "
+                          "`Tensile strength').");
+        prm.declare_entry("Splitting fracture energy",
+                          "0",
+                          Double(0),
+                          "Mode I fracture energy of the units across a "
+                          "splitting interface, J/m^2 = N/m (>= 0; 0: the "
+                          "brick material's `Tensile fracture energy').");
+        prm.declare_entry("Splitting compressive strength",
+                          "0",
+                          Double(0),
+                          "Compressive strength of the units for the "
+                          "splitting interfaces' friction, Pa (>= 0; 0: the "
+                          "brick material's `Compressive strength').");
+        prm.declare_entry("Splitting stiffness",
+                          "0",
+                          Double(0),
+                          "Normal penalty stiffness of the splitting "
+                          "interfaces, Pa/m (>= 0; 0: 100 E_b / L with the "
+                          "enlarged unit's length L, which adds 1 % to a "
+                          "unit's compliance along its length); the shear "
+                          "penalty is this / (2 (1 + nu_b)).");
         prm.declare_entry(
           "Mesh distortion",
           "0",
@@ -459,7 +502,17 @@ namespace masonry
         AssertThrow(!cyclic || !s.output.write_calculix,
                     ExcParameter("Write CalculiX input",
                                  "needs the monotonic protocol"));
-        s.mesh.distortion = prm.get_double("Mesh distortion");
+        s.mesh.distortion  = prm.get_double("Mesh distortion");
+        s.mesh.split_units = prm.get_bool("Splitting interfaces");
+        AssertThrow(!s.mesh.split_units || !s.mesh.bonded,
+                    ExcParameter("Splitting interfaces",
+                                 "needs `Joints = interfaces'"));
+        splitting.tensile_strength =
+          prm.get_double("Splitting tensile strength");
+        splitting.fracture_energy = prm.get_double("Splitting fracture energy");
+        splitting.compressive_strength =
+          prm.get_double("Splitting compressive strength");
+        splitting.stiffness = prm.get_double("Splitting stiffness");
       }
 
       void
@@ -474,6 +527,10 @@ namespace masonry
         plugins::ParsePathScope scope("Wallette");
         boxes = bond->layout(s.mesh.size);
         brickwork::check_mesh(boxes, s.mesh);
+        if (s.mesh.split_units)
+          splitting_law = brickwork::make_splitting_law(splitting,
+                                                        *material,
+                                                        s.mesh.size.length);
         const double H = s.mesh.size.height * s.mesh.size.courses;
         s.protocol.target_displacement = target_strain * H;
         s.protocol.cycle_amplitudes.clear();
@@ -499,8 +556,13 @@ namespace masonry
       void
       run(RunContext &context) override
       {
-        brickwork::run_wallette(
-          boxes, *material, *law, s, postprocessors, context);
+        brickwork::run_wallette(boxes,
+                                *material,
+                                *law,
+                                s,
+                                postprocessors,
+                                context,
+                                splitting_law.get());
       }
 
     private:
@@ -553,6 +615,8 @@ namespace masonry
       std::unique_ptr<brickwork::Bond>          bond;
       std::unique_ptr<brickwork::BrickMaterial> material;
       std::unique_ptr<brickwork::InterfaceLaw>  law;
+      brickwork::SplittingSettings              splitting;
+      std::unique_ptr<brickwork::InterfaceLaw>  splitting_law;
       std::vector<brickwork::Box>               boxes;
       std::vector<std::unique_ptr<brickwork::postprocess::Postprocessor>>
         postprocessors;

@@ -49,6 +49,7 @@ namespace masonry
         Wallette(const std::vector<Box> &boxes,
                  const BrickMaterial    &material,
                  const InterfaceLaw     &law,
+                 const InterfaceLaw     *splitting_law,
                  const WalletteSettings &settings,
                  std::vector<std::unique_ptr<postprocess::Postprocessor>>
                             &postprocessors,
@@ -93,8 +94,10 @@ namespace masonry
                const std::string &message,
                const double       seconds);
 
-        const BrickMaterial               &material;
-        const InterfaceLaw                &law;
+        const BrickMaterial &material;
+        const InterfaceLaw  &law;
+        /** The splitting interfaces' law, nullptr: none. */
+        const InterfaceLaw                *splitting_law;
         const WalletteSettings            &settings;
         RunContext                        &context;
         ConditionalOStream                &pcout;
@@ -103,12 +106,12 @@ namespace masonry
         System                             system;
         Joints                             joints;
         Specimen                           specimen;
-        PointStates                        bricks, joint_points;
-        std::unique_ptr<Integrator>        integrator;
-        std::unique_ptr<LinearSolver>      solver;
-        std::unique_ptr<Protocol>          protocol;
-        std::unique_ptr<StepSizeControl>   step_control;
-        std::unique_ptr<Assembler>         assembler;
+        PointStates                      bricks, joint_points, splitting_points;
+        std::unique_ptr<Integrator>      integrator;
+        std::unique_ptr<LinearSolver>    solver;
+        std::unique_ptr<Protocol>        protocol;
+        std::unique_ptr<StepSizeControl> step_control;
+        std::unique_ptr<Assembler>       assembler;
         std::vector<std::unique_ptr<postprocess::Postprocessor>>
                                   &postprocessors;
         std::vector<std::string>   postprocessor_data;
@@ -122,12 +125,14 @@ namespace masonry
         const std::vector<Box> &boxes,
         const BrickMaterial    &material,
         const InterfaceLaw     &law,
+        const InterfaceLaw     *splitting_law,
         const WalletteSettings &settings,
         std::vector<std::unique_ptr<postprocess::Postprocessor>>
                    &postprocessors,
         RunContext &context)
         : material(material)
         , law(law)
+        , splitting_law(splitting_law)
         , settings(settings)
         , context(context)
         , pcout(context.pcout)
@@ -158,7 +163,7 @@ namespace masonry
                                  settings.specimen);
 
         // point states: 8 per cell, 4 per joint face, as the laws declare
-        std::vector<unsigned int> owned_bricks, owned_joints;
+        std::vector<unsigned int> owned_bricks, owned_joints, owned_splitting;
         for (const auto &cell : triangulation.active_cell_iterators())
           if (cell->is_locally_owned())
             {
@@ -177,7 +182,9 @@ namespace masonry
         for (unsigned int n = 0; n < joints.faces.size(); ++n)
           if (joints.faces[n].owned)
             for (unsigned int q = 0; q < InterfaceElement::n_points; ++q)
-              owned_joints.push_back(InterfaceElement::n_points * n + q);
+              (joints.faces[n].type == splitting_type ? owned_splitting :
+                                                        owned_joints)
+                .push_back(InterfaceElement::n_points * n + q);
         std::vector<double> initial(
           material.is_linear() ? 0 :
                                  n_state_values(material.state_variables()));
@@ -191,6 +198,23 @@ namespace masonry
                                   joints.faces.size(),
                                 initial,
                                 owned_joints);
+        AssertThrow(splitting_law ||
+                      joints.n_faces_of_type[splitting_type] == 0,
+                    ExcMessage("internal error: splitting interfaces "
+                               "without a law"));
+        // the splitting interfaces' states, indexed like the joints' (only
+        // those of splitting faces are used)
+        initial.clear();
+        if (splitting_law)
+          {
+            initial.assign(n_state_values(splitting_law->state_variables()),
+                           0.);
+            splitting_law->initial_state(initial);
+          }
+        splitting_points.initialize(InterfaceElement::n_points *
+                                      joints.faces.size(),
+                                    initial,
+                                    owned_splitting);
 
         assembler = std::make_unique<Assembler>(AssemblyParts{system,
                                                               joints,
@@ -199,7 +223,9 @@ namespace masonry
                                                               law,
                                                               *integrator,
                                                               bricks,
-                                                              joint_points},
+                                                              joint_points,
+                                                              splitting_law,
+                                                              splitting_points},
                                                 settings.mesh.gauss,
                                                 spacing[0]);
         assembler->make_elastic_caches();
@@ -221,6 +247,8 @@ namespace masonry
                                                      assembler->element(),
                                                      bricks,
                                                      joint_points,
+                                                     splitting_law,
+                                                     splitting_points,
                                                      *protocol,
                                                      progress});
         postprocessor_data.assign(postprocessors.size(), std::string());
@@ -251,10 +279,22 @@ namespace masonry
               << "Joints (brick pairs / face pairs): bed " << nj[0] << " / "
               << nf[0] << ", head " << nj[1] << " / " << nf[1] << ", collar "
               << nj[2] << " / " << nf[2] << "\n";
+        if (splitting_law)
+          {
+            const unsigned int t                   = splitting_type;
+            summary["n_split_units"]               = geometry.n_split_units;
+            summary["n_splitting_interface_faces"] = nf[t];
+            pcout << "Splitting interfaces: " << geometry.n_split_units
+                  << " of " << geometry.n_bricks << " units split, " << nf[t]
+                  << " face pairs\n";
+          }
         // every value a law computed from its inputs
         const std::pair<const char *, std::vector<DerivedValue>> derived[] = {
           {"brick_material", material.derived_values()},
-          {"interface_law", law.derived_values()}};
+          {"interface_law", law.derived_values()},
+          {"splitting_interfaces",
+           splitting_law ? splitting_law->derived_values() :
+                           std::vector<DerivedValue>()}};
         for (const auto &[part, values] : derived)
           {
             if (values.empty())
@@ -274,18 +314,24 @@ namespace masonry
       Wallette::max_damages() const
       {
         const MPI_Comm      comm = context.mpi_communicator;
-        std::vector<double> d(law.damage_names().size());
+        std::vector<double> d;
         double              joint = 0;
+        // joints and splitting interfaces
         for (unsigned int n = 0; n < joints.faces.size(); ++n)
           if (joints.faces[n].owned)
-            for (unsigned int q = 0; q < InterfaceElement::n_points; ++q)
-              {
-                law.damages(joint_points.old(InterfaceElement::n_points * n +
-                                             q),
-                            d);
-                for (const double x : d)
-                  joint = std::max(joint, x);
-              }
+            {
+              const bool split      = joints.faces[n].type == splitting_type;
+              const InterfaceLaw &l = split ? *splitting_law : law;
+              const PointStates  &states =
+                split ? splitting_points : joint_points;
+              d.resize(l.damage_names().size());
+              for (unsigned int q = 0; q < InterfaceElement::n_points; ++q)
+                {
+                  l.damages(states.old(InterfaceElement::n_points * n + q), d);
+                  for (const double x : d)
+                    joint = std::max(joint, x);
+                }
+            }
         const unsigned int  n_brick = material.damage_names().size();
         std::vector<double> brick(n_brick, 0.), b(n_brick);
         if (!material.is_linear())
@@ -312,7 +358,9 @@ namespace masonry
         for (unsigned int n = 0; n < joints.faces.size(); ++n)
           if (joints.faces[n].owned)
             for (unsigned int q = 0; q < InterfaceElement::n_points; ++q)
-              joint_points.accept(InterfaceElement::n_points * n + q, older);
+              (joints.faces[n].type == splitting_type ? splitting_points :
+                                                        joint_points)
+                .accept(InterfaceElement::n_points * n + q, older);
         if (!material.is_linear())
           for (const auto &cell : triangulation.active_cell_iterators())
             if (cell->is_locally_owned() &&
@@ -368,6 +416,7 @@ namespace masonry
                 specimen,
                 bricks,
                 joint_points,
+                splitting_points,
                 *solver,
                 *step_control,
                 system,
@@ -588,7 +637,7 @@ namespace masonry
         if (!material.is_linear())
           summary["cell_evaluations_elastic_fraction"] =
             elastic_fraction(a.n_elastic_cells, a.n_material_cells);
-        if (!law.is_linear())
+        if (!law.is_linear() || splitting_law)
           summary["interface_evaluations_elastic_fraction"] =
             elastic_fraction(a.n_elastic_interfaces, a.n_law_interfaces);
         summary["seconds"]          = seconds;
@@ -614,11 +663,15 @@ namespace masonry
       const InterfaceLaw                                       &law,
       const WalletteSettings                                   &settings,
       std::vector<std::unique_ptr<postprocess::Postprocessor>> &postprocessors,
-      RunContext                                               &context)
+      RunContext                                               &context,
+      const InterfaceLaw                                       *splitting_law)
     {
       check_mesh(boxes, settings.mesh);
+      AssertThrow(!settings.mesh.split_units || splitting_law,
+                  ExcMessage("internal error: split units need the "
+                             "splitting interfaces' law"));
       Wallette wallette(
-        boxes, material, law, settings, postprocessors, context);
+        boxes, material, law, splitting_law, settings, postprocessors, context);
       wallette.run();
     }
   } // namespace brickwork

@@ -59,6 +59,10 @@ namespace masonry
       /** Brick points (8 c + q) and joint points (4 n + q). */
       const model::PointStates &bricks;
       const model::PointStates &joint_points;
+      /** The law of the splitting interfaces through the units (nullptr:
+       * none) and their points (4 per face pair, as the joints). */
+      const InterfaceLaw       *splitting_law;
+      const model::PointStates &splitting_points;
       const model::Protocol    &protocol;
       const model::Progress    &progress;
       /** @} */

@@ -55,6 +55,14 @@ namespace masonry
       double distortion = 0;
       /** Gauss (true) or Lobatto (false) points on interfaces. */
       bool gauss = false;
+      /**
+       * Mesh each unit as two halves that meet at a vertical plane through
+       * its middle, normal to its longer horizontal side (in line with the
+       * head joints of the next course for a stretcher): the halves do not
+       * share vertices, so the plane becomes a splitting interface. Units
+       * whose half is not a whole number of cells stay whole.
+       */
+      bool split_units = false;
     };
 
     /** The platens and the gauge (`Platen ...', `Gauge length'). */
@@ -209,7 +217,9 @@ namespace masonry
 
     /**
      * Build, solve and write the results of a wallette under a platen; the
-     * @p postprocessors write the outputs, in their order.
+     * @p postprocessors write the outputs, in their order. With
+     * MeshSettings::split_units the splitting interfaces through the units
+     * follow @p splitting_law (required then).
      */
     void
     run_wallette(
@@ -218,7 +228,8 @@ namespace masonry
       const InterfaceLaw                                       &law,
       const WalletteSettings                                   &settings,
       std::vector<std::unique_ptr<postprocess::Postprocessor>> &postprocessors,
-      RunContext                                               &context);
+      RunContext                                               &context,
+      const InterfaceLaw *splitting_law = nullptr);
   } // namespace brickwork
 } // namespace masonry
 

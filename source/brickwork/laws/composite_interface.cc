@@ -3,6 +3,7 @@
  * Interface law `composite`: the Lourenço & Rots (1997) composite joint
  * (brickwork::laws::CompositeJoint) as a plugin of the wallette model.
  */
+#include <masonry/brickwork/brick_material.h>
 #include <masonry/brickwork/interface_law.h>
 #include <masonry/brickwork/laws/composite_joint.h>
 #include <masonry/core/parameters.h>
@@ -11,6 +12,8 @@
 #include <memory>
 #include <sstream>
 #include <stdexcept>
+
+#include "splitting.h"
 
 namespace masonry
 {
@@ -207,9 +210,30 @@ namespace masonry
         make(1.8);
       }
 
+      /**
+       * Set the law from @p q directly (not from a parameter file): the
+       * splitting interfaces; @p derived are its derived values and
+       * @p entry the parameter named in errors.
+       */
+      void
+      configure(const CompositeJoint::Parameters &q,
+                const std::vector<DerivedValue>  &derived,
+                const std::string                &entry)
+      {
+        p                = q;
+        normal_stiffness = q.normal_stiffness;
+        shear_stiffness  = q.shear_stiffness;
+        given_derived    = derived;
+        error_entry      = entry;
+        law              = std::make_unique<CompositeJoint>(make(1.));
+        make(1.8);
+      }
+
       std::vector<DerivedValue>
       derived_values() const override
       {
+        if (!error_entry.empty())
+          return given_derived;
         std::vector<DerivedValue> v;
         if (penalties_derived)
           {
@@ -348,16 +372,122 @@ namespace masonry
             if (factor != 1.)
               m += " (with the strengths times 1.8, the largest factor of "
                    "`Strength scatter')";
-            AssertThrow(false, ExcParameter("Composite", m));
+            AssertThrow(
+              false,
+              ExcParameter(error_entry.empty() ? "Composite" : error_entry, m));
           }
         return CompositeJoint(p);
       }
 
       CompositeJoint::Parameters p;
       /** Whether k_n and k_s come from the moduli. */
-      bool                            penalties_derived = false;
+      bool penalties_derived = false;
+      /** configure(): the derived values and the entry named in errors. */
+      std::vector<DerivedValue>       given_derived;
+      std::string                     error_entry;
       std::unique_ptr<CompositeJoint> law;
     };
+
+    std::unique_ptr<InterfaceLaw>
+    make_splitting_law(const SplittingSettings &s,
+                       const BrickMaterial     &brick,
+                       const double             unit_length)
+    {
+      std::vector<DerivedValue> derived;
+      // a value given (> 0) or the brick material's (printed as derived)
+      const auto value = [&](const double       given,
+                             const double       from_brick,
+                             const char        *entry,
+                             const char        *name,
+                             const char        *unit,
+                             const std::string &how) {
+        if (given > 0)
+          return given;
+        AssertThrow(from_brick > 0,
+                    ExcParameter(entry,
+                                 "must be given (> 0): the brick material "
+                                 "has no such value"));
+        derived.push_back({name, from_brick, unit, how});
+        return from_brick;
+      };
+      const double f_t = value(s.tensile_strength,
+                               brick.tensile_strength(),
+                               "Splitting tensile strength",
+                               "tensile_strength",
+                               "Pa",
+                               "the brick material's tensile strength");
+      const double G_f = value(s.fracture_energy,
+                               brick.tensile_fracture_energy(),
+                               "Splitting fracture energy",
+                               "mode_I_fracture_energy",
+                               "J/m^2",
+                               "the brick material's tensile fracture energy");
+      const double f_c = value(s.compressive_strength,
+                               brick.compressive_strength(),
+                               "Splitting compressive strength",
+                               "compressive_strength",
+                               "Pa",
+                               "the brick material's compressive strength");
+      AssertThrow(f_c > f_t,
+                  ExcParameter("Splitting compressive strength",
+                               "must exceed the tensile strength"));
+      const double E = brick.youngs_modulus(), nu = brick.poissons_ratio();
+      CompositeJoint::Parameters q;
+      q.tensile_strength = f_t;
+      q.mode_I_energy    = G_f;
+      // Mohr-Coulomb through the uniaxial strengths of the unit
+      q.cohesion          = 0.5 * std::sqrt(f_c * f_t);
+      q.friction          = (f_c - f_t) / (2 * std::sqrt(f_c * f_t));
+      q.residual_friction = q.friction;
+      q.dilatancy         = 0;
+      q.mode_II_energy    = 10 * G_f;
+      q.normal_stiffness =
+        s.stiffness > 0 ? s.stiffness : 100 * E / unit_length;
+      q.shear_stiffness = q.normal_stiffness / (2 * (1 + nu));
+      // the cap out of reach: ten times the unit's strength, and a
+      // softening that would take a metre of plastic jump
+      q.cap_strength = 10 * f_c;
+      {
+        const double sp = q.cap_strength, sm = q.cap_middle_ratio * sp,
+                     sr = q.cap_residual_ratio * sp;
+        q.cap_energy =
+          sp + (sm - sp) / 3. - sr + (sm - sr) * (sm - sr) / (2. * (sp - sm));
+      }
+      if (s.stiffness <= 0)
+        derived.push_back(
+          {"normal_stiffness",
+           q.normal_stiffness,
+           "Pa/m",
+           "k_n = 100 E_b / L (L = " + std::to_string(unit_length) +
+             " m, the enlarged unit's length: the interface "
+             "adds 1 % to the unit's compliance)"});
+      derived.push_back({"shear_stiffness",
+                         q.shear_stiffness,
+                         "Pa/m",
+                         "k_s = k_n / (2 (1 + nu_b))"});
+      derived.push_back({"cohesion",
+                         q.cohesion,
+                         "Pa",
+                         "c = sqrt(f_c f_t) / 2 (Mohr-Coulomb through the "
+                         "unit's uniaxial strengths)"});
+      derived.push_back({"friction",
+                         q.friction,
+                         "-",
+                         "tan(phi) = (f_c - f_t) / (2 sqrt(f_c f_t)) "
+                         "(Mohr-Coulomb)"});
+      derived.push_back({"mode_II_fracture_energy",
+                         q.mode_II_energy,
+                         "J/m^2",
+                         "G_II = 10 G_f (assumed)"});
+      derived.push_back({"cap_strength",
+                         q.cap_strength,
+                         "Pa",
+                         "10 f_c: out of reach (the unit's crushing is the "
+                         "brick material's)"});
+      auto law = std::make_unique<CompositeInterface>();
+      law->configure(q, derived, "Splitting tensile strength");
+      return law;
+    }
   } // namespace brickwork
 } // namespace masonry
 

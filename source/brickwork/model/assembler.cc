@@ -76,16 +76,19 @@ namespace masonry
         matrix_of_interface.assign(faces.size(), nullptr);
         std::array<Local3, 4>  no_traction{};
         std::array<Local33, 4> elastic;
-        elastic.fill(parts.law.elastic_tangent());
-        Vector<double> f(24);
+        Vector<double>         f(24);
         for (unsigned int n = 0; n < faces.size(); ++n)
           if (faces[n].owned)
             {
               const auto &face = faces[n];
-              auto       &m    = interface_matrices[std::make_pair(
-                face.axis, std::lround(face.area * 1e12))];
+              // the splitting interfaces (axis 0 or 1) have their own law
+              const unsigned int key =
+                face.type == splitting_type ? 3 + face.axis : face.axis;
+              auto &m = interface_matrices[std::make_pair(
+                key, std::lround(face.area * 1e12))];
               if (m.m() == 0)
                 {
+                  elastic.fill(parts.law_of(n).elastic_tangent());
                   m.reinit(24, 24);
                   interface_element.local(
                     face.axis, face.area, no_traction, elastic, f, &m);
@@ -118,7 +121,8 @@ namespace masonry
         system.ghosted    = system.u;
         system.f_int      = 0;
         const bool linear_model =
-          parts.material.is_linear() && parts.law.is_linear();
+          parts.material.is_linear() && parts.law.is_linear() &&
+          (!parts.splitting_law || parts.splitting_law->is_linear());
         const bool with_matrix = need_matrix && !(linear_model && matrix_valid);
         is_initial             = true;
         // elastic bricks and nonlinear joints: the bricks' part of the
@@ -315,31 +319,31 @@ namespace masonry
       void
       Assembler::assemble_joints(const bool with_matrix, const double time_step)
       {
-        System             &system = parts.system;
-        const InterfaceLaw &law    = parts.law;
-        const auto         &faces  = parts.joints.faces;
-        const unsigned int  n_quad = InterfaceElement::n_points;
-        FullMatrix<double>  ki(24, 24);
-        Vector<double>      fi(24), ue(24);
-        InterfacePoint      point;
+        System            &system = parts.system;
+        const auto        &faces  = parts.joints.faces;
+        const unsigned int n_quad = InterfaceElement::n_points;
+        FullMatrix<double> ki(24, 24);
+        Vector<double>     fi(24), ue(24);
+        InterfacePoint     point;
         point.time_step = time_step;
         std::array<Local3, 4>  jumps, tractions;
         std::array<Local33, 4> tangents;
-        std::vector<double>    damages(law.damage_names().size());
-        const Local33          elastic_tangent = law.elastic_tangent();
+        std::vector<double>    damages;
         for (unsigned int n = 0; n < faces.size(); ++n)
           {
             const auto &face = faces[n];
             if (!face.owned || parts.specimen.face_deleted[n])
               continue;
-            point.strength_factor = parts.specimen.face_factor[n];
+            const InterfaceLaw &law    = parts.law_of(n);
+            PointStates        &states = parts.states_of(n);
+            point.strength_factor      = parts.specimen.face_factor[n];
             for (unsigned int i = 0; i < 24; ++i)
               ue[i] = system.ghosted[face.dofs[i]];
             interface_element.jumps(face.axis, ue, jumps);
             bool elastic = true;
             for (unsigned int q = 0; q < n_quad && elastic; ++q)
               elastic = parts.integrator.joint_is_elastic(
-                law, jumps[q], parts.joint_points, n_quad * n + q, point);
+                law, jumps[q], states, n_quad * n + q, point);
             if (elastic)
               {
                 // intact and below the onset: the cached elastic matrix
@@ -351,8 +355,7 @@ namespace masonry
                   system.zero_constraints.distribute_local_to_global(
                     k, face.dofs, system.matrix);
                 for (unsigned int q = 0; q < n_quad; ++q)
-                  parts.integrator.keep_elastic_joint(parts.joint_points,
-                                                      n_quad * n + q);
+                  parts.integrator.keep_elastic_joint(states, n_quad * n + q);
                 ++statistics.n_elastic_interfaces;
                 continue;
               }
@@ -360,7 +363,7 @@ namespace masonry
             for (unsigned int q = 0; q < n_quad; ++q)
               parts.integrator.joint_response(law,
                                               jumps[q],
-                                              parts.joint_points,
+                                              states,
                                               n_quad * n + q,
                                               point,
                                               tractions[q],
@@ -378,13 +381,14 @@ namespace masonry
             if (is_initial)
               for (unsigned int q = 0; q < n_quad; ++q)
                 {
-                  law.damages(parts.integrator.step_state(parts.joint_points,
+                  damages.resize(law.damage_names().size());
+                  law.damages(parts.integrator.step_state(states,
                                                           n_quad * n + q),
                               damages);
                   for (const double d : damages)
                     if (d > 0)
                       is_initial = false;
-                  if (tangents[q] != elastic_tangent)
+                  if (tangents[q] != law.elastic_tangent())
                     is_initial = false;
                 }
             system.f_int.add(face.dofs, fi);
@@ -451,21 +455,23 @@ namespace masonry
                     }
                 }
           }
-        const InterfaceLaw &law = parts.law;
-        InterfacePoint      point;
+        InterfacePoint point;
         point.time_step = time_step;
         Local3                t;
         Local33               D;
         Vector<double>        ue(24);
         std::array<Local3, 4> jumps;
-        const unsigned int    n_damages = law.damage_names().size();
-        std::vector<double> d(n_damages), d_old(n_damages), d_older(n_damages);
-        const auto         &faces = parts.joints.faces;
+        const auto           &faces = parts.joints.faces;
         for (unsigned int n = 0; n < faces.size(); ++n)
           {
             const auto &face = faces[n];
             if (!face.owned || parts.specimen.face_deleted[n])
               continue;
+            const InterfaceLaw &law       = parts.law_of(n);
+            PointStates        &states    = parts.states_of(n);
+            const unsigned int  n_damages = law.damage_names().size();
+            std::vector<double> d(n_damages), d_old(n_damages),
+              d_older(n_damages);
             point.strength_factor = parts.specimen.face_factor[n];
             for (unsigned int i = 0; i < 24; ++i)
               ue[i] = system.ghosted[face.dofs[i]];
@@ -473,13 +479,9 @@ namespace masonry
             for (unsigned int q = 0; q < 4; ++q)
               {
                 const unsigned int p = 4 * n + q;
-                law.evaluate(jumps[q],
-                             parts.joint_points.old(p),
-                             point,
-                             parts.joint_points.updated(p),
-                             t,
-                             D);
-                damage_error(law, parts.joint_points, p, d, d_old, d_older);
+                law.evaluate(
+                  jumps[q], states.old(p), point, states.updated(p), t, D);
+                damage_error(law, states, p, d, d_old, d_older);
               }
           }
         return Utilities::MPI::max(error, system.comm);

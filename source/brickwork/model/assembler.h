@@ -55,6 +55,25 @@ namespace masonry
         PointStates &bricks;
         /** Joint points: 4 per face (index 4 n + q). */
         PointStates &joint_points;
+        /** The law of the splitting interfaces (nullptr: none). */
+        const InterfaceLaw *splitting_law;
+        /** Their points, indexed like joint_points (only the splitting
+         * faces' entries are used). */
+        PointStates &splitting_points;
+
+        /** The law of face @p n. */
+        const InterfaceLaw &
+        law_of(const unsigned int n) const
+        {
+          return joints.faces[n].type == splitting_type ? *splitting_law : law;
+        }
+        /** The point states of face @p n. */
+        PointStates &
+        states_of(const unsigned int n) const
+        {
+          return joints.faces[n].type == splitting_type ? splitting_points :
+                                                          joint_points;
+        }
       };
 
       /** Assembles forces and tangents; keeps the elastic caches. */

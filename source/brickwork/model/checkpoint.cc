@@ -33,8 +33,8 @@ namespace masonry
         serialize_parts(Archive &ar, const CheckpointParts &parts)
         {
           ar &parts.progress &parts.curve &parts.statistics &parts.specimen;
-          ar &parts.bricks &parts.joint_points &parts.solver &parts
-            .step_control &parts.postprocessors;
+          ar &parts.bricks &parts.joint_points &parts.splitting_points;
+          ar &parts.solver &parts.step_control &parts.postprocessors;
         }
 
         std::string

@@ -47,6 +47,7 @@ namespace masonry
         Specimen                &specimen;
         PointStates             &bricks;
         PointStates             &joint_points;
+        PointStates             &splitting_points;
         LinearSolver            &solver;
         StepSizeControl         &step_control;
         System                  &system;

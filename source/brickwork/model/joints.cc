@@ -18,7 +18,7 @@ namespace masonry
     {
       using namespace dealii;
 
-      const char *joint_type_name[3] = {"bed", "head", "collar"};
+      const char *joint_type_name[4] = {"bed", "head", "collar", "splitting"};
 
       Joints
       find_joints(const DoFHandler<3>         &dof_handler,
@@ -30,7 +30,7 @@ namespace masonry
         std::map<std::array<long, 3>,
                  std::pair<DoFHandler<3>::active_cell_iterator, unsigned int>>
                                                         open;
-        std::set<std::pair<unsigned int, unsigned int>> pairs[3];
+        std::set<std::pair<unsigned int, unsigned int>> pairs[4];
         auto key = [&](const Point<3> &p) {
           std::array<long, 3> k;
           for (unsigned int d = 0; d < 3; ++d)
@@ -71,8 +71,11 @@ namespace masonry
                 face.dofs.resize(24);
                 face.brick_a = a->material_id();
                 face.brick_b = b->material_id();
-                face.cell_a  = a->active_cell_index();
-                face.cell_b  = b->active_cell_index();
+                // the two halves of a split unit
+                if (face.brick_a == face.brick_b)
+                  face.type = splitting_type;
+                face.cell_a = a->active_cell_index();
+                face.cell_b = b->active_cell_index();
                 for (unsigned int v = 0; v < 4; ++v)
                   {
                     face.vertices[v] = a->face(fa)->vertex(v);
@@ -100,7 +103,7 @@ namespace masonry
                 pairs[face.type].insert({face.brick_a, face.brick_b});
                 joints.faces.push_back(face);
               }
-        for (unsigned int t = 0; t < 3; ++t)
+        for (unsigned int t = 0; t < 4; ++t)
           joints.n_joints_of_type[t] = pairs[t].size();
         return joints;
       }

@@ -20,7 +20,8 @@ namespace masonry
       /** A joint between two bricks: a pair of coincident cell faces. */
       struct InterfaceFace
       {
-        /** 0 bed (normal z), 1 head (normal x), 2 collar (normal y). */
+        /** 0 bed (normal z), 1 head (normal x), 2 collar (normal y), 3
+         * splitting (through a unit: both sides belong to the same brick). */
         unsigned int type;
         /** Axis of the normal (from side A, lower coordinate, to B). */
         unsigned int axis;
@@ -38,16 +39,19 @@ namespace masonry
         unsigned int cell_a, cell_b;
       };
 
+      /** InterfaceFace::type of a splitting interface. */
+      constexpr unsigned int splitting_type = 3;
+
       /** Names of the joint types, by InterfaceFace::type. */
-      extern const char *joint_type_name[3];
+      extern const char *joint_type_name[4];
 
       /** All joints of the wallette. */
       struct Joints
       {
         std::vector<InterfaceFace> faces;
         /** Face pairs and joints (brick pairs) of each type. */
-        std::array<unsigned int, 3> n_faces_of_type{{0, 0, 0}},
-          n_joints_of_type{{0, 0, 0}};
+        std::array<unsigned int, 4> n_faces_of_type{{0, 0, 0, 0}},
+          n_joints_of_type{{0, 0, 0, 0}};
       };
 
       /**

@@ -112,9 +112,32 @@ namespace masonry
             g.thickness = std::max(g.thickness, box.upper[1]);
           }
         const double extent[3] = {g.length, g.thickness, g.height};
+        // the blocks of cells: one per brick, or its two halves when the
+        // unit is split (same material id: the faces between them are the
+        // splitting interface)
+        std::vector<std::pair<Box, unsigned int>> blocks;
         for (unsigned int b = 0; b < boxes.size(); ++b)
           {
-            const Box   &box = boxes[b];
+            const Box         &box = boxes[b];
+            const unsigned int d =
+              box.upper[1] - box.lower[1] > box.upper[0] - box.lower[0] ? 1 : 0;
+            const unsigned int n = divisions(box, d, h[d]);
+            if (settings.split_units && !settings.bonded && n >= 2 &&
+                n % 2 == 0)
+              {
+                Box          first = box, second = box;
+                const double middle = 0.5 * (box.lower[d] + box.upper[d]);
+                first.upper[d]      = middle;
+                second.lower[d]     = middle;
+                blocks.emplace_back(first, b);
+                blocks.emplace_back(second, b);
+                ++g.n_split_units;
+              }
+            else
+              blocks.emplace_back(box, b);
+          }
+        for (const auto &[box, b] : blocks)
+          {
             unsigned int n[3];
             for (unsigned int d = 0; d < 3; ++d)
               {

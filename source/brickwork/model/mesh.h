@@ -22,6 +22,8 @@ namespace masonry
       {
         double       height = 0, length = 0, thickness = 0, gross_area = 0;
         unsigned int n_bricks = 0;
+        /** Units meshed as two halves (MeshSettings::split_units). */
+        unsigned int n_split_units = 0;
       };
 
       /** Cells of @p box along direction @p d of spacing @p h; 0 if not a

@@ -41,11 +41,16 @@ namespace masonry
           f = cov > 0 ? draw() : 1.;
         std::map<std::pair<unsigned int, unsigned int>, double> joint_factor;
         for (const auto &face : faces)
-          joint_factor[{face.brick_a, face.brick_b}] = 1;
+          if (face.type != splitting_type)
+            joint_factor[{face.brick_a, face.brick_b}] = 1;
         for (auto &j : joint_factor)
           j.second = cov > 0 ? draw() : 1.;
+        // a splitting interface has the strength factor of its unit
         for (unsigned int i = 0; i < faces.size(); ++i)
-          s.face_factor[i] = joint_factor[{faces[i].brick_a, faces[i].brick_b}];
+          s.face_factor[i] =
+            faces[i].type == splitting_type ?
+              brick_factor[faces[i].brick_a] :
+              joint_factor[{faces[i].brick_a, faces[i].brick_b}];
         for (const auto &cell : triangulation.active_cell_iterators())
           {
             s.cell_length[cell->active_cell_index()] =

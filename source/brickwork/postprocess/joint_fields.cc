@@ -74,30 +74,45 @@ namespace masonry
         JointFields::face_values(const ModelView          &view,
                                  std::vector<std::string> &names) const
         {
-          const auto        &faces      = view.joints.faces;
-          const unsigned int n          = faces.size();
-          const unsigned int n_quad     = model::InterfaceElement::n_points;
-          names                         = view.law.reported_quantities();
+          const auto        &faces   = view.joints.faces;
+          const unsigned int n       = faces.size();
+          const unsigned int n_quad  = model::InterfaceElement::n_points;
+          names                      = view.law.reported_quantities();
+          const unsigned int n_joint = names.size();
+          // the splitting interfaces' quantities follow, prefixed (zero on
+          // the joints, and the joints' zero on them)
+          if (view.splitting_law)
+            for (const auto &name : view.splitting_law->reported_quantities())
+              names.push_back("splitting_" + name);
           const unsigned int n_reported = names.size();
           names.insert(names.end(),
                        {"normal_opening",
                         "slip",
-                        "joint_type_bed0_head1_collar2"});
+                        view.splitting_law ?
+                          "joint_type_bed0_head1_collar2_splitting3" :
+                          "joint_type_bed0_head1_collar2"});
           std::vector<std::vector<double>> values(names.size(),
                                                   std::vector<double>(n, 0));
           const System::Vector ghosted = view.system.ghosted_solution();
-          std::vector<double>  reported(n_reported);
+          std::vector<double>  reported;
           for (unsigned int i = 0; i < n; ++i)
             if (faces[i].owned)
               {
-                const auto        &face = faces[i];
-                const unsigned int a    = face.axis;
+                const auto         &face  = faces[i];
+                const unsigned int  a     = face.axis;
+                const bool          split = face.type == model::splitting_type;
+                const InterfaceLaw &law =
+                  split ? *view.splitting_law : view.law;
+                const unsigned int first = split ? n_joint : 0;
+                reported.resize(law.reported_quantities().size());
                 for (unsigned int q = 0; q < n_quad; ++q)
                   {
-                    view.law.report(view.joint_points.old(n_quad * i + q),
-                                    reported);
-                    for (unsigned int k = 0; k < n_reported; ++k)
-                      values[k][i] += reported[k] / n_quad;
+                    law.report((split ? view.splitting_points :
+                                        view.joint_points)
+                                 .old(n_quad * i + q),
+                               reported);
+                    for (unsigned int k = 0; k < reported.size(); ++k)
+                      values[first + k][i] += reported[k] / n_quad;
                   }
                 // opening at the centre of the face
                 Tensor<1, 3> jump;

@@ -1,0 +1,106 @@
+/**
+ * Splitting interfaces (`Splitting interfaces = true'): one elastic unit,
+ * 2.0 x 0.002 x 0.1 m (length x width x height), meshed as two halves joined
+ * by a vertical interface at mid-length, between fixed platens (no lateral
+ * motion of the top and bottom faces) under compression.
+ *
+ * Closed form: the unit is a thin plate (width << height << length), so
+ * sigma_yy = 0 (plane stress) and, away from its ends, the platens hold
+ * eps_xx = 0 over the whole height. With eps_zz = -strain:
+ * sigma_zz = -E strain / (1 - nu^2) and the lateral stress across the
+ * splitting plane is sigma_xx = nu sigma_zz = -nu E strain / (1 - nu^2).
+ * For a unit that contracts laterally (nu = -0.25) the restraint puts the
+ * plane in tension: it opens when sigma_xx = f_t, at
+ * strain = f_t (1 - nu^2) / (-nu E) = 3.75e-4 for f_t = 1 MPa, E = 10 GPa.
+ * (The platen rows of cells are also held across the width, a boundary
+ * layer of one row: 8 rows give the closed form within 0.5 %.) With
+ * nu = +0.15 the plane is in lateral compression and never opens.
+ */
+#include <fstream>
+#include <sstream>
+
+#include "brickwork_tests.h"
+
+using namespace brickwork_tests;
+
+namespace
+{
+  std::string
+  unit(const double nu, const double target)
+  {
+    std::ostringstream s;
+    s << "  set Brick length = 2.0\n"
+         "  set Brick width = 0.002\n"
+         "  set Brick height = 0.1\n"
+         "  set Joint thickness = 0\n"
+         "  set Courses = 1\n"
+         "  set Length in bricks = 1\n"
+         "  set Elements along the length = 40\n"
+         "  set Elements along the width = 1\n"
+         "  set Elements along the height = 8\n"
+         "  set Platen lateral restraint = fixed\n"
+         "  set Target strain = "
+      << target
+      << "\n"
+         "  set Number of steps = 1000\n"
+         "  set Splitting interfaces = true\n"
+         "  set Splitting tensile strength = 1e6\n"
+         "  set Splitting fracture energy = 50\n"
+         "  set Splitting compressive strength = 10e6\n"
+         "  set Splitting stiffness = 1e15\n";
+    std::ostringstream m;
+    m << "subsection Bond\n  set Pattern = stack\nend\n"
+         "subsection Brick material\n"
+         "  set Model = elastic\n"
+         "  subsection Elastic\n"
+         "    set Young's modulus = 10e9\n"
+         "    set Poisson's ratio = "
+      << nu
+      << "\n"
+         "  end\n"
+         "end\n";
+    return prm(s.str(), m.str());
+  }
+
+  /** Strain of the first step with a damaged interface point; 0: none. */
+  double
+  opening_strain(const std::string &name)
+  {
+    for (const auto &row : curve(name))
+      if (row[6] > 0)
+        return row[2];
+    return 0;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const double                             E = 10e9, f_t = 1e6, f_c = 10e6;
+  {
+    const double nu       = -0.25;
+    auto         summary  = run("auxetic", unit(nu, 0.0005));
+    const double expected = f_t * (1 - nu * nu) / (-nu * E);
+    check(summary["n_split_units"].as_number() == 1 &&
+            summary["n_splitting_interface_faces"].as_number() == 8,
+          "one unit split: 8 face pairs (1 across the width x 8 up the "
+          "height)");
+    const double opened = opening_strain("auxetic");
+    check(opened > 0 && relative(opened, expected) < 0.01,
+          "nu = -0.25: the splitting interface opens at strain f_t (1 - "
+          "nu^2) / (-nu E) = 3.75e-4 (1 %)");
+    auto &d = summary["derived_values"]["splitting_interfaces"];
+    check(relative(d["cohesion"].as_number(), 0.5 * std::sqrt(f_c * f_t)) <
+              1e-12 &&
+            relative(d["friction"].as_number(),
+                     (f_c - f_t) / (2 * std::sqrt(f_c * f_t))) < 1e-12,
+          "derived cohesion and friction: Mohr-Coulomb through f_c and f_t");
+  }
+  {
+    run("positive", unit(0.15, 0.001));
+    check(opening_strain("positive") == 0,
+          "nu = 0.15: lateral compression, the interface stays closed to "
+          "strain 1e-3");
+  }
+}
