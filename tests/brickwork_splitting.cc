@@ -16,6 +16,7 @@
  * layer of one row: 8 rows give the closed form within 0.5 %.) With
  * nu = +0.15 the plane is in lateral compression and never opens.
  */
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -26,7 +27,10 @@ using namespace brickwork_tests;
 namespace
 {
   std::string
-  unit(const double nu, const double target)
+  unit(const double       nu,
+       const double       target,
+       const unsigned int steps = 1000,
+       const std::string &extra = "")
   {
     std::ostringstream s;
     s << "  set Brick length = 2.0\n"
@@ -42,8 +46,10 @@ namespace
          "  set Target strain = "
       << target
       << "\n"
-         "  set Number of steps = 1000\n"
-         "  set Splitting interfaces = true\n"
+         "  set Number of steps = "
+      << steps << "\n"
+      << extra
+      << "  set Splitting interfaces = true\n"
          "  set Splitting tensile strength = 1e6\n"
          "  set Splitting fracture energy = 50\n"
          "  set Splitting compressive strength = 10e6\n"
@@ -96,6 +102,20 @@ main(int argc, char **argv)
             relative(d["friction"].as_number(),
                      (f_c - f_t) / (2 * std::sqrt(f_c * f_t))) < 1e-12,
           "derived cohesion and friction: Mohr-Coulomb through f_c and f_t");
+  }
+  {
+    // stopped after the interface has opened (step 85 of 100) and resumed:
+    // the splitting interfaces' states are in the checkpoint
+    run("uninterrupted", unit(-0.25, 0.0005, 100));
+    run("resumed", unit(-0.25, 0.0005, 100, "  set Maximum steps = 85\n"));
+    run("resumed", unit(-0.25, 0.0005, 100, "  set Resume = true\n"));
+    const auto a = curve("uninterrupted"), b = curve("resumed");
+    double     diff = a.size() == b.size() ? 0 : 1;
+    for (unsigned int i = 0; i < a.size() && i < b.size(); ++i)
+      diff = std::max(
+        {diff, std::abs(a[i][4] - b[i][4]) / 1e6, std::abs(a[i][6] - b[i][6])});
+    check(diff < 1e-12 && a.back()[6] > 0,
+          "resumed after the opening = uninterrupted (stress, damage; 1e-12)");
   }
   {
     run("positive", unit(0.15, 0.001));

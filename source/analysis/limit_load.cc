@@ -235,7 +235,7 @@ namespace masonry
         summary["mechanism_scale"] = scale;
         write_mechanism(
           rigid_blocks::motion_from_solution(problem, solution.x, scale),
-          rigid_blocks::contact_forces(solution, live_scale, false),
+          rigid_blocks::contact_forces(problem, solution, live_scale, false),
           context);
       }
 
@@ -265,10 +265,8 @@ namespace masonry
         AssertThrow(live_scale > 0,
                     dealii::ExcMessage("the live load is zero"));
 
-        auto  problem   = rigid_blocks::build_mechanism_problem(*model,
-                                                             *joints,
-                                                             nullptr,
-                                                             bonded_supports);
+        auto problem = rigid_blocks::build_mechanism_problem(
+          *model, *joints, nullptr, bonded_supports, leave_out_implied_rows);
         auto &lp        = problem.lp;
         lp.maximize     = false;
         const auto dead = rigid_blocks::load_work(dead_force,

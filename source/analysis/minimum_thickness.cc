@@ -118,8 +118,10 @@ namespace masonry
         stands(hi, context);
         const lp::Solution &solution = last_solution;
         record(last_problem->lp, solution, context);
-        const auto forces =
-          rigid_blocks::contact_forces(solution, last_force_scale, true);
+        const auto forces = rigid_blocks::contact_forces(*last_problem,
+                                                         solution,
+                                                         last_force_scale,
+                                                         true);
 
         const dealii::Point<3> reference =
           geometry->patches().front().point(dealii::Point<2>(0.5, 0.5));
@@ -198,7 +200,7 @@ namespace masonry
         last_force_scale = dead_load_magnitude();
         last_problem     = std::make_unique<rigid_blocks::MechanismProblem>(
           rigid_blocks::build_mechanism_problem(
-            *model, *joints, nullptr, bonded_supports));
+            *model, *joints, nullptr, bonded_supports, leave_out_implied_rows));
         auto      &lp   = last_problem->lp;
         const auto work = rigid_blocks::load_work(dead_force,
                                                   dead_moment,

@@ -162,7 +162,7 @@ namespace masonry
               << solution.iterations << " LP iterations\n";
 
         const auto forces =
-          rigid_blocks::contact_forces(solution, force_scale, true);
+          rigid_blocks::contact_forces(problem, solution, force_scale, true);
         write_results(rigid_blocks::motion_from_solution(problem,
                                                          solution.x,
                                                          settlement_scale),
@@ -199,7 +199,8 @@ namespace masonry
           [&](const dealii::Point<3> &x, const std::string &label) {
             return u0(x, label) / settlement_scale;
           },
-          bonded_supports);
+          bonded_supports,
+          leave_out_implied_rows);
         const auto work = rigid_blocks::load_work(dead_force,
                                                   dead_moment,
                                                   problem.length,

@@ -176,7 +176,21 @@ namespace masonry
        * from that basis (usually no iteration). Returns whether @p model is
        * then proven optimal; otherwise the caller solves @p lp directly.
        */
-      bool
+      /** How solve_through_dual() ended. */
+      enum class DualRoute
+      {
+        /** @p model holds a proven optimal vertex. */
+        optimal,
+        /**
+         * The simplex proved the dual LP infeasible: the LP itself has
+         * no dual feasible point (it is unbounded or infeasible).
+         */
+        dual_infeasible,
+        /** Anything else: solve the LP directly. */
+        failed
+      };
+
+      DualRoute
       solve_through_dual(ClpSimplex        &model,
                          const std::string &method,
                          unsigned int      &iterations) const;
@@ -194,15 +208,16 @@ namespace masonry
         "Algorithm of Clp: `dual simplex', `primal simplex', `barrier' "
         "(primal-dual interior point followed by crossover, so that the "
         "solution is a vertex as with the simplex methods), or `automatic': "
-        "when the LP has at least as many columns as rows (Mohr-Coulomb "
-        "joints: the plastic multipliers), Clp solves the explicit dual of "
-        "the LP (for a mechanism LP, the static problem in the contact "
-        "forces) with the barrier and no presolve, maps the vertex back and "
-        "confirms it with the primal simplex, else (or if that is not "
-        "proven optimal: an infeasible or unbounded LP) the barrier on the "
-        "LP itself; with fewer columns than rows (no tension no sliding) "
-        "the dual simplex. The choice comes from the measurements in "
-        "contrib/benchmarks/lp_solvers. Unitless choice.");
+        "Clp solves the explicit dual of the LP (for a mechanism LP, the "
+        "static problem in the contact forces) without presolve, by the "
+        "barrier when the LP has at least as many columns as rows "
+        "(Mohr-Coulomb joints: the plastic multipliers), else (no tension "
+        "no sliding) by the primal simplex, maps the vertex back and "
+        "confirms it with the primal simplex. A dual LP that the simplex "
+        "proves infeasible makes the LP unbounded or infeasible (decided by "
+        "a feasibility solve); anything else not proven optimal is solved "
+        "directly by the same method. The choice comes from the "
+        "measurements in contrib/benchmarks/lp_solvers. Unitless choice.");
       prm.declare_entry("Presolve",
                         "true",
                         dealii::Patterns::Bool(),
@@ -281,7 +296,7 @@ namespace masonry
       model.initialSolve(options);
     }
 
-    bool
+    Clp::DualRoute
     Clp::solve_through_dual(ClpSimplex        &model,
                             const std::string &method,
                             unsigned int      &iterations) const
@@ -290,7 +305,7 @@ namespace masonry
         {
           std::unique_ptr<ClpSimplex> dual = dual_of(model);
           if (!dual)
-            return false;
+            return DualRoute::failed;
           dual->setLogLevel(0);
           dual->messageHandler()->setLogLevel(0);
           if (time_limit() > 0)
@@ -302,19 +317,25 @@ namespace masonry
           run(*dual, method, false);
           iterations += dual->numberIterations();
           if (!dual->isProvenOptimal())
-            return false;
+            // a simplex's infeasibility verdict on the dual LP is
+            // reliable (the barrier's is not: it may stop on numerical
+            // trouble), and saves solving the LP itself again
+            return method != "barrier" && dual->isProvenPrimalInfeasible() ?
+                     DualRoute::dual_infeasible :
+                     DualRoute::failed;
           static_cast<ClpSimplexOther &>(model).restoreFromDual(dual.get());
           // clean up from the restored basis: a vertex of the original
           // problem
           model.primal(0);
           iterations += model.numberIterations();
-          return model.isProvenOptimal();
+          return model.isProvenOptimal() ? DualRoute::optimal :
+                                           DualRoute::failed;
         }
       catch (const CoinError &e)
         {
           // Clp's dualisation handles only some bound patterns: solve
           // directly
-          return false;
+          return DualRoute::failed;
         }
     }
 
@@ -370,26 +391,28 @@ namespace masonry
           if (!done)
             model = create(lp);
         }
+      bool dual_infeasible = false;
       if (!warm && algorithm == "automatic")
         {
-          // measured (contrib/benchmarks/lp_solvers): with more columns
-          // than rows (Mohr-Coulomb), the barrier on the dual LP; otherwise
-          // (no tension no sliding: many rows, few columns) the dual
-          // simplex on the LP itself
-          method = lp.n_columns() >= lp.n_rows() ? "barrier" : "dual simplex";
-          if (method == "barrier")
-            {
-              done = solve_through_dual(*model, method, solution.iterations);
-              if (!done)
-                model = create(lp);
-            }
+          // measured (contrib/benchmarks/lp_solvers): the explicit dual LP,
+          // with more columns than rows (Mohr-Coulomb) by the barrier,
+          // otherwise (no tension no sliding: many rows, few columns) by
+          // the primal simplex; the LP itself by the same method if that
+          // fails
+          method = lp.n_columns() >= lp.n_rows() ? "barrier" : "primal simplex";
+          const DualRoute route =
+            solve_through_dual(*model, method, solution.iterations);
+          done            = route == DualRoute::optimal;
+          dual_infeasible = route == DualRoute::dual_infeasible;
+          if (!done && !dual_infeasible)
+            model = create(lp);
         }
-      if (!done)
+      if (!done && !dual_infeasible)
         {
           run(*model, method, presolve);
           solution.iterations += model->numberIterations();
         }
-      if (!done && !model->isProvenOptimal() && presolve &&
+      if (!done && !dual_infeasible && !model->isProvenOptimal() && presolve &&
           !model->hitMaximumIterations())
         {
           // confirm infeasibility/unboundedness (or recover from a failure)
@@ -398,8 +421,21 @@ namespace masonry
           run(*model, method, false);
           solution.iterations += model->numberIterations();
         }
-      if (!done && model->isProvenOptimal() && method == "barrier" &&
-          !certificate_ok(lp, *model))
+      if (!done && !dual_infeasible && model->isProvenPrimalInfeasible() &&
+          method != "primal simplex")
+        {
+          // the dual simplex (or the barrier) misjudges some feasible LPs
+          // with thin feasible sets as infeasible (the normalised collapse
+          // LP of a minimum-thickness arch just below the minimum): an
+          // infeasible verdict is confirmed by the primal simplex on the
+          // original problem
+          model = create(lp);
+          run(*model, "primal simplex", false);
+          solution.iterations += model->numberIterations();
+          method = "primal simplex";
+        }
+      if (!done && !dual_infeasible && model->isProvenOptimal() &&
+          method == "barrier" && !certificate_ok(lp, *model))
         {
           // the barrier maps infinite bounds to huge finite ones, so that an
           // unbounded problem comes back "optimal" at a huge vertex: the
@@ -417,7 +453,7 @@ namespace masonry
           solution.iterations += model->numberIterations();
         }
 
-      if (model->isProvenOptimal())
+      if (!dual_infeasible && model->isProvenOptimal())
         {
           const unsigned int n = lp.n_columns(), m = lp.n_rows();
           solution.status = Status::optimal;
@@ -438,12 +474,12 @@ namespace masonry
                                        model->statusArray() + n + m);
             }
         }
-      else if (model->isProvenPrimalInfeasible())
+      else if (!dual_infeasible && model->isProvenPrimalInfeasible())
         {
           solution.status  = Status::infeasible;
           solution.message = "Clp: primal infeasible";
         }
-      else if (model->isProvenDualInfeasible())
+      else if (dual_infeasible || model->isProvenDualInfeasible())
         {
           // dual infeasible: unbounded if primal feasible, which a solve
           // with zero objective decides

@@ -232,6 +232,8 @@ namespace masonry
       rigid_blocks::Discretisation options;
       /** Whether supports are bonded (rigid) rather than unilateral. */
       bool bonded_supports = false;
+      /** `Implied contact rows = leave out`. */
+      bool leave_out_implied_rows = true;
       /** Extra vertical dead load per unit area, Pa. */
       dealii::FunctionParser<3> surface_load{1};
       /** Output options. */

@@ -10,6 +10,7 @@
 #include <masonry/lp/linear_program.h>
 #include <masonry/rigid_blocks/block_model.h>
 
+#include <array>
 #include <functional>
 
 namespace masonry
@@ -46,6 +47,15 @@ namespace masonry
      * - bonded supports: all three jumps = 0 (the block follows u0).
      * The dual of a row is the contact force in that direction (N per unit
      * of the objective's force scale).
+     *
+     * Without plastic multipliers (`no tension no sliding`, bonded
+     * supports), the rows of an interface that follow from its other rows
+     * are left out (point_rows): equality rows that are, with their
+     * right-hand side, linear combinations of kept ones (on a plane
+     * interface the tangential jumps at all points follow from three), and
+     * inequality rows that are nonnegative combinations of at most three
+     * kept ones (the middle station of a straight edge). The feasible set
+     * is the same; the contact forces are then carried by the kept rows.
      */
     struct MechanismProblem
     {
@@ -60,19 +70,27 @@ namespace masonry
       std::vector<double> dissipation;
       /** The length that scales rotations, m. */
       double length = 1;
+      /**
+       * For every contact point (in the order of the interfaces and their
+       * points) the LP rows of its normal, across and along jump, or −1
+       * for a row left out because the others imply it.
+       */
+      std::vector<std::array<int, 3>> point_rows;
     };
 
     /**
      * Build the constraints for @p model with joints of @p joints. @p u0
      * gives the ground motion at support points in the velocity unit of the
      * columns (nullptr: fixed ground). @p bonded_supports makes the
-     * supports rigid (no multipliers).
+     * supports rigid (no multipliers). With @p leave_out_implied_rows, rows
+     * that follow from the others are left out (see MechanismProblem).
      */
     MechanismProblem
     build_mechanism_problem(const BlockModel     &model,
                             const InterfaceModel &joints,
                             const SupportMotion  &u0,
-                            const bool            bonded_supports);
+                            const bool            bonded_supports,
+                            const bool leave_out_implied_rows = true);
 
     /**
      * Objective coefficients of the block columns for the work of forces
@@ -99,12 +117,14 @@ namespace masonry
      * across and along force, N, compression positive, given the force
      * unit @p force_scale of the objective and the sense in which it was
      * optimised (the dual of a maximisation and a minimisation differ in
-     * sign).
+     * sign). A point's component whose row was left out (see
+     * MechanismProblem) is zero.
      */
     std::vector<std::array<double, 3>>
-    contact_forces(const lp::Solution &solution,
-                   const double        force_scale,
-                   const bool          maximised);
+    contact_forces(const MechanismProblem &problem,
+                   const lp::Solution     &solution,
+                   const double            force_scale,
+                   const bool              maximised);
 
     /** Total dissipation of a solution, in the objective's units. */
     double
