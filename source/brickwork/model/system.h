@@ -52,9 +52,10 @@ namespace masonry
         void
         make_constraints();
 
-        /** The solution with every relevant entry on this rank. */
+        /** A copy of the solution with every relevant entry on this rank
+         * (for readers of a const System: the postprocessors). */
         Vector
-        ghosted_solution() const
+        ghosted_copy() const
         {
           Vector v(owned, relevant, comm);
           v = u;

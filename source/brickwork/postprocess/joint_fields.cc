@@ -93,8 +93,8 @@ namespace masonry
                           "joint_type_bed0_head1_collar2"});
           std::vector<std::vector<double>> values(names.size(),
                                                   std::vector<double>(n, 0));
-          const System::Vector ghosted = view.system.ghosted_solution();
-          std::vector<double>  reported;
+          const System::Vector             ghosted = view.system.ghosted_copy();
+          std::vector<double>              reported;
           for (unsigned int i = 0; i < n; ++i)
             if (faces[i].owned)
               {
