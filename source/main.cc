@@ -1,18 +1,106 @@
 /**
  * @file
- * The `masonry` executable: a thin wrapper around masonry::run_application().
+ * The `masonry` executable: a launcher that links none of masonry's heavy
+ * libraries. `--version`, `--help` and a call without arguments are
+ * answered here (the dynamic loader's relocation of the ~200 libraries
+ * behind libmasonry, deal.II, Trilinos, PETSc, OpenCASCADE, Open MPI, is
+ * most of the start-up time); everything else loads libmasonry with
+ * dlopen() and calls masonry_main() (MPI_Init, run_application()).
  */
-#include <masonry/core/application.h>
+#include <masonry/config.h>
+#include <masonry/core/usage.h>
 
-#include <deal.II/base/mpi.h>
-
+#include <climits>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <dlfcn.h>
 #include <string>
-#include <vector>
+#include <unistd.h>
+
+namespace
+{
+  /** Whether this process was started by an MPI launcher. */
+  bool
+  under_mpi()
+  {
+    for (const char *name :
+         {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK", "PMI_RANK"})
+      if (std::getenv(name))
+        return true;
+    return false;
+  }
+
+  /** The directory of this executable, with a trailing slash, or "". */
+  std::string
+  own_directory()
+  {
+    char       path[PATH_MAX];
+    const auto n = ::readlink("/proc/self/exe", path, sizeof(path) - 1);
+    if (n <= 0)
+      return "";
+    path[n]                 = '\0';
+    const std::string self  = path;
+    const auto        slash = self.rfind('/');
+    return slash == std::string::npos ? "" : self.substr(0, slash + 1);
+  }
+} // namespace
 
 int
 main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv);
-  const std::vector<std::string>           arguments(argv + 1, argv + argc);
-  return masonry::run_application(arguments, MPI_COMM_WORLD);
+  // the answers that need no library (not under mpirun, where only rank 0
+  // may print, and not with --defaults, which changes their meaning)
+  bool defaults = false;
+  for (int i = 1; i < argc; ++i)
+    defaults = defaults || std::strcmp(argv[i], "--defaults") == 0;
+  if (!defaults && !under_mpi())
+    {
+      if (argc == 1)
+        {
+          std::fputs(masonry::usage_text, stderr);
+          return 2;
+        }
+      if (std::strcmp(argv[1], "--help") == 0 ||
+          std::strcmp(argv[1], "-h") == 0)
+        {
+          std::fputs(masonry::usage_text, stdout);
+          return 0;
+        }
+      if (std::strcmp(argv[1], "--version") == 0)
+        {
+          std::printf("masonry %s\n", MASONRY_VERSION);
+          return 0;
+        }
+    }
+
+  // next to the executable (build tree), in ../lib (installed), or where
+  // the dynamic loader finds it; RTLD_GLOBAL for Open MPI's components
+  const std::string directory = own_directory();
+  void             *library   = nullptr;
+  std::string       errors;
+  for (const std::string &candidate : {directory + "libmasonry.so",
+                                       directory + "../lib/libmasonry.so",
+                                       std::string("libmasonry.so")})
+    {
+      library = ::dlopen(candidate.c_str(), RTLD_NOW | RTLD_GLOBAL);
+      if (library)
+        break;
+      errors += std::string("\n  ") + ::dlerror();
+    }
+  if (!library)
+    {
+      std::fprintf(stderr,
+                   "masonry: cannot load libmasonry.so:%s\n",
+                   errors.c_str());
+      return 1;
+    }
+  using Main       = int (*)(int, char **);
+  const auto entry = reinterpret_cast<Main>(::dlsym(library, "masonry_main"));
+  if (!entry)
+    {
+      std::fprintf(stderr, "masonry: libmasonry.so has no masonry_main\n");
+      return 1;
+    }
+  return entry(argc, argv);
 }

@@ -9,9 +9,12 @@
  * `Maximum steps' and resumed from its checkpoint reproduces the
  * uninterrupted curve (1e-12); the three variables are fields of the VTU
  * output; and solution.pvd and interfaces.pvd of the resumed run list every
- * output step of the uninterrupted run.
+ * output step of the uninterrupted run; with `Output interval' = 0 the
+ * last step of the cyclic run (the end of an unloading leg) is written.
  */
 #include <masonry/brickwork/brick_material.h>
+
+#include <cstdio>
 
 #include "brickwork_tests.h"
 
@@ -189,6 +192,29 @@ main(int argc, char **argv)
                    pvd_entries("results/full/interfaces.pvd")),
         "solution.pvd and interfaces.pvd of the resumed run list every "
         "output step of the uninterrupted run");
+  // Output interval = 0: the initial and the final state only; a cyclic
+  // run ends on an unloading leg, whose last step is written too
+  std::string only_ends = wallette;
+  only_ends.replace(only_ends.find("Output interval = 3"),
+                    std::string("Output interval = 3").size(),
+                    "Output interval = 0");
+  run("ends", prm(only_ends, plugins));
+  const auto        ends_curve = curve("ends");
+  const std::string last_file  = [&] {
+    char name[32];
+    std::snprintf(name,
+                  sizeof(name),
+                  "_%04d.",
+                  int(ends_curve.empty() ? -1 : ends_curve.back()[0]));
+    return std::string(name);
+  }();
+  const auto solution_ends   = pvd_entries("results/ends/solution.pvd");
+  const auto interfaces_ends = pvd_entries("results/ends/interfaces.pvd");
+  check(solution_ends.size() == 2 && interfaces_ends.size() == 2 &&
+          solution_ends.back().find(last_file) != std::string::npos &&
+          interfaces_ends.back().find(last_file) != std::string::npos,
+        "Output interval = 0: solution.pvd and interfaces.pvd list the "
+        "initial state and the last step of the curve");
   // the same with the brick fields as HDF5: solution.xdmf
   const std::string hdf5 = wallette + "set Output format = hdf5\n";
   run("full_hdf5", prm(hdf5, plugins));

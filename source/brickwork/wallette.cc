@@ -85,9 +85,9 @@ namespace masonry
         begin();
         /** Whether `Maximum steps' stops the run after this step. */
         bool
-        interrupted(const Segment     &leg,
-                    const unsigned int steps_this_run,
-                    const unsigned int n_legs) const;
+        interrupted(const unsigned int steps_this_run,
+                    const unsigned int n_legs,
+                    const bool         finished) const;
         /** Summary entries and the closing line. */
         void
         finish(const std::string &status,
@@ -448,21 +448,13 @@ namespace masonry
       }
 
       bool
-      Wallette::interrupted(const Segment     &leg,
-                            const unsigned int steps_this_run,
-                            const unsigned int n_legs) const
+      Wallette::interrupted(const unsigned int steps_this_run,
+                            const unsigned int n_legs,
+                            const bool         finished) const
       {
         const unsigned int max_steps = settings.protocol.max_steps;
-        if (max_steps == 0 || steps_this_run < max_steps ||
-            progress.segment >= n_legs)
-          return false;
-        // the run's last leg may just have ended
-        const bool done =
-          progress.segment + 1 == n_legs &&
-          (leg.unloading ?
-             curve.back().stress <= settings.protocol.unloading_stress :
-             progress.applied >= leg.target * (1 - 1e-12));
-        return !done;
+        return max_steps > 0 && steps_this_run >= max_steps &&
+               progress.segment < n_legs && !finished;
       }
 
       void
@@ -569,9 +561,11 @@ namespace masonry
                 solver->forget();
               }
             record_step(leg, its, removed, legs.size());
-            const bool last = progress.segment + 1 == legs.size() &&
-                              !leg.unloading &&
-                              next >= leg.target * (1 - 1e-12);
+            // the step that ends the last leg (in a cyclic run an unloading
+            // one) writes its state whatever the output interval
+            const bool last =
+              progress.segment + 1 == legs.size() &&
+              leg_done(leg, curve, settings.protocol, nominal, progress);
             const unsigned int interval = settings.output.vtu_interval;
             if ((interval > 0 && progress.step % interval == 0) || last)
               for (auto &pp : postprocessors)
@@ -580,7 +574,7 @@ namespace masonry
             if (settings.checkpoint.checkpoint_interval > 0 &&
                 progress.step % settings.checkpoint.checkpoint_interval == 0)
               save("running");
-            if (interrupted(leg, steps_this_run, legs.size()))
+            if (interrupted(steps_this_run, legs.size(), last))
               {
                 status  = "interrupted";
                 message = "stopped after `Maximum steps' = " +

@@ -5,8 +5,10 @@
 #include <masonry/core/output_directory.h>
 #include <masonry/core/parameters.h>
 #include <masonry/core/plugins.h>
+#include <masonry/core/usage.h>
 
 #include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
 #include <algorithm>
@@ -22,37 +24,7 @@ namespace masonry
 {
   namespace
   {
-    const char *usage =
-      "Usage: masonry [OPTION] FILE.prm\n"
-      "\n"
-      "Runs the analysis selected by `set Analysis = ...` in FILE.prm and "
-      "writes its\n"
-      "results into `Output directory` (default output/<FILE stem>): "
-      "parameters.prm,\n"
-      "log.txt, summary.json and the analysis' own files.\n"
-      "\n"
-      "Options:\n"
-      "  FILE.prm                   run the analysis described in FILE.prm\n"
-      "  --validate FILE.prm        check FILE.prm (entries, values, "
-      "expressions,\n"
-      "                             output directory) without running\n"
-      "  --defaults FILE.prm        also accept a file that sets no "
-      "Analysis (runs the\n"
-      "                             default analysis; with or after "
-      "--validate too)\n"
-      "  --print-parameters[=prm|json]\n"
-      "                             write every parameter of every plugin "
-      "with its\n"
-      "                             documentation and default, then exit\n"
-      "  --version                  print the version and exit\n"
-      "  --help                     print this text and exit\n"
-      "\n"
-      "Runs in parallel under mpirun; only rank 0 writes to the screen.\n"
-      "Exit code: 0 for a result (also `mechanism', `incompatible', "
-      "`no_collapse'),\n"
-      "1 for an error or a run without a result (`not converged', "
-      "`failed'), 2 without\n"
-      "arguments.\n";
+    const char *usage = usage_text;
 
     /** Declare the driver's own top-level entries. */
     void
@@ -576,3 +548,15 @@ namespace masonry
       }
   }
 } // namespace masonry
+
+/**
+ * The entry point that the `masonry` launcher (source/main.cc) finds with
+ * dlsym(): MPI_Init, run_application() on the arguments, MPI_Finalize.
+ */
+extern "C" int
+masonry_main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv);
+  const std::vector<std::string>           arguments(argv + 1, argv + argc);
+  return masonry::run_application(arguments, MPI_COMM_WORLD);
+}

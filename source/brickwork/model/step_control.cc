@@ -82,6 +82,22 @@ namespace masonry
       }
 
       bool
+      leg_done(const Segment                 &leg,
+               const std::vector<CurvePoint> &curve,
+               const ProtocolSettings        &settings,
+               const double                   nominal,
+               const Progress                &progress)
+      {
+        if (!leg.unloading)
+          return progress.applied >= leg.target * (1 - 1e-12);
+        // (the aimed last step may land a round-off above)
+        return curve.size() > 1 &&
+               (curve.back().stress <= settings.unloading_stress +
+                                         1e-6 * std::abs(curve[1].stress) ||
+                progress.applied <= leg.target + 1e-9 * nominal);
+      }
+
+      bool
       next_position(const Segment                 &leg,
                     const std::vector<CurvePoint> &curve,
                     const ProtocolSettings        &settings,
@@ -92,7 +108,7 @@ namespace masonry
         const double applied = progress.applied, increment = progress.increment;
         if (!leg.unloading)
           {
-            if (applied >= leg.target * (1 - 1e-12))
+            if (leg_done(leg, curve, settings, nominal, progress))
               {
                 ++progress.segment;
                 return false;
@@ -103,10 +119,7 @@ namespace masonry
             return true;
           }
         const CurvePoint &last = curve.back();
-        // (the aimed last step may land a round-off above)
-        if (last.stress <=
-              settings.unloading_stress + 1e-6 * std::abs(curve[1].stress) ||
-            applied <= leg.target + 1e-9 * nominal)
+        if (leg_done(leg, curve, settings, nominal, progress))
           {
             ++progress.segment;
             progress.increment = nominal;

@@ -68,6 +68,17 @@ namespace masonry
        * (progress.applied) and the curve so far; false when the leg is
        * done (progress.segment then points to the next leg).
        */
+      /**
+       * Whether the leg has reached its end: the target displacement when
+       * loading; the unloading stress (or the target) when unloading.
+       */
+      bool
+      leg_done(const Segment                 &leg,
+               const std::vector<CurvePoint> &curve,
+               const ProtocolSettings        &settings,
+               const double                   nominal,
+               const Progress                &progress);
+
       bool
       next_position(const Segment                 &leg,
                     const std::vector<CurvePoint> &curve,
