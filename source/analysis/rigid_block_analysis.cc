@@ -333,6 +333,43 @@ namespace masonry
       return vertices;
     }
 
+    namespace
+    {
+      /** adaptation.csv (best and mean fitness per generation) and, with
+       * @p picture, adaptation.png. */
+      void
+      write_adaptation_history(const adaptation::Result &result,
+                               const std::string        &fitness,
+                               const bool                picture,
+                               RunContext               &context)
+      {
+        {
+          std::ofstream csv(context.output.file("adaptation.csv"));
+          csv << "# convergence of the mesh adaptation: best and mean "
+              << fitness << " per generation\n"
+              << "generation,evaluations,best,mean,seconds\n"
+              << std::setprecision(12);
+          for (const auto &g : result.history)
+            csv << g.generation << "," << g.evaluations << "," << g.best << ","
+                << g.mean << "," << g.seconds << "\n";
+        }
+        if (picture)
+          {
+            const std::string script  = find_script("adaptation_plot.py");
+            const std::string dir     = context.output.path();
+            const std::string command = "/usr/bin/python3 '" + script + "' '" +
+                                        dir + "adaptation.csv' '" + dir +
+                                        "adaptation.png' >/dev/null 2>&1";
+            if (!script.empty() && std::system(command.c_str()) == 0)
+              context.output.file("adaptation.png");
+            else
+              context.pcout
+                << "Note: adaptation.png not written (adaptation_plot.py "
+                   "with /usr/bin/python3 and matplotlib)\n";
+          }
+      }
+    } // namespace
+
     void
     RigidBlockAnalysis::adapt(RunContext &context)
     {
@@ -470,32 +507,12 @@ namespace masonry
             << uniform << "), " << result.evaluations + 1 << " evaluations in "
             << std::setprecision(3) << seconds << " s\n";
 
-      if (dealii::Utilities::MPI::this_mpi_process(context.mpi_communicator) !=
+      if (dealii::Utilities::MPI::this_mpi_process(context.mpi_communicator) ==
           0)
-        return;
-      {
-        std::ofstream csv(context.output.file("adaptation.csv"));
-        csv << "# convergence of the mesh adaptation: best and mean "
-            << fitness_name() << " per generation\n"
-            << "generation,evaluations,best,mean,seconds\n"
-            << std::setprecision(12);
-        for (const auto &g : result.history)
-          csv << g.generation << "," << g.evaluations << "," << g.best << ","
-              << g.mean << "," << g.seconds << "\n";
-      }
-      if (output_options.write_picture)
-        {
-          const std::string script  = find_script("adaptation_plot.py");
-          const std::string dir     = context.output.path();
-          const std::string command = "/usr/bin/python3 '" + script + "' '" +
-                                      dir + "adaptation.csv' '" + dir +
-                                      "adaptation.png' >/dev/null 2>&1";
-          if (!script.empty() && std::system(command.c_str()) == 0)
-            context.output.file("adaptation.png");
-          else
-            pcout << "Note: adaptation.png not written (adaptation_plot.py "
-                     "with /usr/bin/python3 and matplotlib)\n";
-        }
+        write_adaptation_history(result,
+                                 fitness_name(),
+                                 output_options.write_picture,
+                                 context);
     }
 
     void

@@ -7,6 +7,7 @@
 #include <masonry/brickwork/bond.h>
 #include <masonry/brickwork/brick_material.h>
 #include <masonry/brickwork/interface_law.h>
+#include <masonry/brickwork/postprocessor.h>
 #include <masonry/brickwork/wallette.h>
 #include <masonry/core/parameters.h>
 
@@ -15,7 +16,6 @@
 #include <cmath>
 
 #include "../brickwork/laws/splitting.h"
-#include "../brickwork/postprocess/postprocessor.h"
 
 namespace masonry
 {

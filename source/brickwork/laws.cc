@@ -149,46 +149,6 @@ namespace masonry
       return D;
     }
 
-    std::vector<StateVariable>
-    InterfaceLaw::state_variables() const
-    {
-      return {};
-    }
-
-    void
-    InterfaceLaw::initial_state(StateView state) const
-    {
-      std::fill(state.begin(), state.end(), 0.);
-    }
-
-    std::vector<std::string>
-    InterfaceLaw::reported_quantities() const
-    {
-      return component_names(state_variables());
-    }
-
-    void
-    InterfaceLaw::report(ConstStateView            state,
-                         dealii::ArrayView<double> values) const
-    {
-      copy_state(state, values);
-    }
-
-    std::vector<std::string>
-    InterfaceLaw::damage_names() const
-    {
-      return {};
-    }
-
-    void
-    InterfaceLaw::damages(ConstStateView, dealii::ArrayView<double>) const
-    {}
-
-    std::vector<DerivedValue>
-    InterfaceLaw::derived_values() const
-    {
-      return {};
-    }
 
     /** Linear joints: t = diag(k_n, k_s, k_s) [u]. */
     class ElasticInterface : public InterfaceLaw
@@ -518,42 +478,42 @@ namespace masonry
     {}
 
     std::vector<StateVariable>
-    BrickMaterial::state_variables() const
+    PointLaw::state_variables() const
     {
       return {};
     }
 
     void
-    BrickMaterial::initial_state(StateView state) const
+    PointLaw::initial_state(StateView state) const
     {
       std::fill(state.begin(), state.end(), 0.);
     }
 
     std::vector<std::string>
-    BrickMaterial::reported_quantities() const
+    PointLaw::reported_quantities() const
     {
       return component_names(state_variables());
     }
 
     void
-    BrickMaterial::report(ConstStateView            state,
-                          dealii::ArrayView<double> values) const
+    PointLaw::report(ConstStateView            state,
+                     dealii::ArrayView<double> values) const
     {
       copy_state(state, values);
     }
 
     std::vector<std::string>
-    BrickMaterial::damage_names() const
+    PointLaw::damage_names() const
     {
       return {};
     }
 
     void
-    BrickMaterial::damages(ConstStateView, dealii::ArrayView<double>) const
+    PointLaw::damages(ConstStateView, dealii::ArrayView<double>) const
     {}
 
     std::vector<DerivedValue>
-    BrickMaterial::derived_values() const
+    PointLaw::derived_values() const
     {
       return {};
     }

@@ -32,7 +32,7 @@
 #include "model/step_control.h"
 #include "model/system.h"
 #include "model/view.h"
-#include "postprocess/postprocessor.h"
+#include "postprocess/builtin.h"
 
 namespace masonry
 {
@@ -240,19 +240,19 @@ namespace masonry
                                                 nominal);
         view                 = std::make_unique<ModelView>(ModelView{settings,
                                                      context,
+                                                     material,
+                                                     law,
+                                                     curve,
                                                      geometry,
                                                      system,
                                                      joints,
                                                      specimen,
-                                                     material,
-                                                     law,
                                                      assembler->element(),
                                                      bricks,
                                                      joint_points,
                                                      splitting_law,
                                                      splitting_points,
                                                      *protocol,
-                                                     curve,
                                                      progress});
         postprocessor_data.assign(postprocessors.size(), std::string());
       }

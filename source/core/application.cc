@@ -248,6 +248,80 @@ namespace masonry
       return found;
     }
 
+    /**
+     * Write summary.json: its file list, the non-finite results removed and
+     * named (JSON has no NaN). Rank 0 writes; returns "" or why it failed
+     * (on every rank).
+     */
+    std::string
+    write_summary_file(Json            &summary,
+                       OutputDirectory &output,
+                       const MPI_Comm   comm)
+    {
+      output.file("summary.json");
+      Json files = Json::array();
+      for (const auto &f : output.files())
+        files.push_back(f);
+      summary["files"] = files;
+      std::string error;
+      if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
+        {
+          const auto bad = summary.non_finite_members();
+          if (!bad.empty())
+            {
+              Json list = Json::array();
+              for (const auto &b : bad)
+                {
+                  list.push_back(b);
+                  if (b.find_first_of("/[") == std::string::npos)
+                    summary.erase(b);
+                }
+              summary["non_finite_results"] = list;
+              // nested ones: drop the whole member holding them
+              for (const auto &b : bad)
+                {
+                  const auto cut = b.find_first_of("/[");
+                  if (cut != std::string::npos)
+                    summary.erase(b.substr(0, cut));
+                }
+            }
+          std::ofstream out(output.path() + "summary.json");
+          out << summary.dump() << "\n";
+          out.close();
+          if (!out)
+            error = "cannot write '" + output.path() + "summary.json'";
+        }
+      return dealii::Utilities::MPI::broadcast(comm, error, 0);
+    }
+
+    /**
+     * Why the results of a completed analysis are not usable (a non-finite
+     * result or CSV entry, a file that was not written), or "".
+     */
+    std::string
+    result_problem(const Json                            &summary,
+                   const OutputDirectory                 &output,
+                   const Log                             &log,
+                   const std::filesystem::file_time_type &file_start)
+    {
+      const auto bad = summary.non_finite_members();
+      if (!bad.empty())
+        return "the result '" + bad.front() +
+               "' is not a finite number (a value out of its physical range "
+               "in the parameter file?)";
+      const auto csv = non_finite_in_csv(output);
+      if (!csv.empty())
+        return "non-finite numbers (nan/inf) in " + join(csv) +
+               " (a value out of its physical range in the parameter file?)";
+      const auto missing =
+        unwritten_files(output, file_start, {"summary.json"});
+      if (!missing.empty())
+        return "result files could not be written: " + join(missing);
+      if (!log.good())
+        return "cannot write '" + output.path() + "log.txt'";
+      return {};
+    }
+
     int
     run_file(const std::string &file, const MPI_Comm comm, const bool defaults)
     {
@@ -297,45 +371,11 @@ namespace masonry
       summary["parameter_file"] = file;
 
       // writes summary.json (rank 0); returns "" or why it failed
-      auto write_summary = [&]() -> std::string {
+      auto write_summary = [&]() {
         summary["wall_seconds"] = std::chrono::duration<double>(
                                     std::chrono::steady_clock::now() - start)
                                     .count();
-        output.file("summary.json");
-        Json files = Json::array();
-        for (const auto &f : output.files())
-          files.push_back(f);
-        summary["files"] = files;
-        std::string error;
-        if (root)
-          {
-            // JSON has no NaN: a non-finite result is removed and named
-            const auto bad = summary.non_finite_members();
-            if (!bad.empty())
-              {
-                Json list = Json::array();
-                for (const auto &b : bad)
-                  {
-                    list.push_back(b);
-                    if (b.find_first_of("/[") == std::string::npos)
-                      summary.erase(b);
-                  }
-                summary["non_finite_results"] = list;
-                // nested ones: drop the whole member holding them
-                for (const auto &b : bad)
-                  {
-                    const auto cut = b.find_first_of("/[");
-                    if (cut != std::string::npos)
-                      summary.erase(b.substr(0, cut));
-                  }
-              }
-            std::ofstream out(output.path() + "summary.json");
-            out << summary.dump() << "\n";
-            out.close();
-            if (!out)
-              error = "cannot write '" + output.path() + "summary.json'";
-          }
-        return dealii::Utilities::MPI::broadcast(comm, error, 0);
+        return write_summary_file(summary, output, comm);
       };
 
       // a run that gives no result: summary.json says so, exit code 1
@@ -382,24 +422,7 @@ namespace masonry
       // every result must be finite and every file written
       std::string problem;
       if (root)
-        {
-          const auto bad = summary.non_finite_members();
-          if (!bad.empty())
-            problem = "the result '" + bad.front() +
-                      "' is not a finite number (a value out of its "
-                      "physical range in the parameter file?)";
-          const auto csv = non_finite_in_csv(output);
-          if (problem.empty() && !csv.empty())
-            problem = "non-finite numbers (nan/inf) in " + join(csv) +
-                      " (a value out of its physical range in the parameter "
-                      "file?)";
-          const auto missing =
-            unwritten_files(output, file_start, {"summary.json"});
-          if (problem.empty() && !missing.empty())
-            problem = "result files could not be written: " + join(missing);
-          if (problem.empty() && !log.good())
-            problem = "cannot write '" + output.path() + "log.txt'";
-        }
+        problem = result_problem(summary, output, log, file_start);
       problem = dealii::Utilities::MPI::broadcast(comm, problem, 0);
       if (!problem.empty())
         fail("failed", problem);

@@ -210,17 +210,11 @@ namespace masonry
       return x + zeta * geom.thickness(x) * patch.normal(uv);
     }
 
-    void
-    BlockModel::build()
+    namespace
     {
-      const auto &patches = geom.patches();
-      AssertThrow(!patches.empty(),
-                  dealii::ExcMessage("the geometry model has no patch"));
-      AssertThrow(options.n_u >= 1 && options.n_v >= 1 &&
-                    options.n_stations >= 2 && options.n_quadrature >= 1,
-                  dealii::ExcMessage("invalid block discretisation"));
-
-      // bounding box: the length scale for tolerances and LP scaling
+      /** Size of the bounding box of 5 x 5 points of every patch, m. */
+      double
+      bounding_box_size(const std::vector<geometry::Patch> &patches)
       {
         dealii::Point<3> lo, hi;
         bool             first = true;
@@ -236,185 +230,214 @@ namespace masonry
                   }
                 first = false;
               }
-        size = lo.distance(hi);
+        return lo.distance(hi);
       }
+    } // namespace
 
-      const double zeta_gauss[2] = {-0.5 / std::sqrt(3.), 0.5 / std::sqrt(3.)};
-      const double rho_g         = geom.density() * gravity;
+    /** A face of a patch's parameter mesh on the patch's boundary. */
+    struct BlockModel::BoundaryFace
+    {
+      unsigned int                    block;
+      unsigned int                    patch;
+      unsigned int                    edge;
+      std::array<dealii::Point<2>, 2> uv;
+      std::array<dealii::Point<3>, 3> x; // ends and midpoint
+      dealii::Point<2>                outward;
+    };
+
+    /** A face between two blocks of one patch. */
+    struct BlockModel::InnerFace
+    {
+      unsigned int                    first, second;
+      std::array<dealii::Point<2>, 2> uv;
+      dealii::Point<2>                outward;
+    };
+
+    void
+    BlockModel::build()
+    {
+      const auto &patches = geom.patches();
+      AssertThrow(!patches.empty(),
+                  dealii::ExcMessage("the geometry model has no patch"));
+      AssertThrow(options.n_u >= 1 && options.n_v >= 1 &&
+                    options.n_stations >= 2 && options.n_quadrature >= 1,
+                  dealii::ExcMessage("invalid block discretisation"));
+
+      // bounding box: the length scale for tolerances and LP scaling
+      size = bounding_box_size(patches);
 
       // one parameter-space triangulation per patch: cells are blocks,
       // faces are interfaces (boundary ids 0..3: edges u=0, u=1, v=0, v=1)
-      struct BoundaryFace
-      {
-        unsigned int                    block;
-        unsigned int                    patch;
-        unsigned int                    edge;
-        std::array<dealii::Point<2>, 2> uv;
-        std::array<dealii::Point<3>, 3> x; // ends and midpoint
-        dealii::Point<2>                outward;
-      };
       std::vector<BoundaryFace> boundary_faces;
-      struct InnerFace
-      {
-        unsigned int                    first, second;
-        std::array<dealii::Point<2>, 2> uv;
-        dealii::Point<2>                outward;
-      };
-      std::vector<InnerFace> inner_faces;
-
+      std::vector<InnerFace>    inner_faces;
       block_list.clear();
       interface_list.clear();
       for (unsigned int p = 0; p < patches.size(); ++p)
-        {
-          dealii::Triangulation<2> mesh;
-          dealii::GridGenerator::subdivided_hyper_rectangle(
-            mesh,
-            {options.n_u, options.n_v},
-            dealii::Point<2>(0, 0),
-            dealii::Point<2>(1, 1),
-            true);
-          AssertThrow(vertices[p].size() == mesh.n_vertices(),
-                      dealii::ExcMessage("parameter mesh of patch " +
-                                         std::to_string(p) +
-                                         " has the wrong number of vertices"));
-          // subdivided_hyper_rectangle numbers vertices lexicographically
-          for (const auto &cell : mesh.active_cell_iterators())
-            for (const unsigned int v : cell->vertex_indices())
-              cell->vertex(v) = vertices[p][cell->vertex_index(v)];
-
-          const unsigned int offset = block_list.size();
-          for (const auto &cell : mesh.active_cell_iterators())
-            {
-              Block block;
-              block.patch = p;
-              for (unsigned int v = 0; v < 4; ++v)
-                block.corners[v] = cell->vertex(v);
-              block_list.push_back(block);
-              double               volume = 0;
-              dealii::Tensor<1, 3> first_moment;
-              for (const auto &[uv, w] : quadrature(block_list.size() - 1))
-                {
-                  const dealii::Point<3> s  = patches[p].point(uv);
-                  const auto             ts = patches[p].tangents(uv);
-                  const auto             n  = patches[p].normal(uv);
-                  const auto   dn = normal_derivatives(patches[p], uv);
-                  const double t  = geom.thickness(s);
-                  for (const double zeta : zeta_gauss)
-                    {
-                      // det[x_u, x_v, x_zeta] with x = s + zeta t n; the
-                      // zeta t_u n terms are parallel to x_zeta and drop
-                      const double jac =
-                        std::abs(t * (n * dealii::cross_product_3d(
-                                            ts[0] + zeta * t * dn[0],
-                                            ts[1] + zeta * t * dn[1])));
-                      const dealii::Point<3> x = s + zeta * t * n;
-                      volume += 0.5 * w * jac;
-                      first_moment += 0.5 * w * jac * x;
-                    }
-                }
-              block_list.pop_back();
-              AssertThrow(volume > 0 && std::isfinite(volume),
-                          dealii::ExcMessage(
-                            "block " + std::to_string(block_list.size()) +
-                            " of patch " + std::to_string(p) +
-                            " has no volume: degenerate cell or thickness"));
-              block.volume   = volume;
-              block.centroid = dealii::Point<3>(first_moment / volume);
-              block.weight   = rho_g * volume;
-              block_list.push_back(block);
-            }
-
-          for (const auto &cell : mesh.active_cell_iterators())
-            for (const unsigned int f : cell->face_indices())
-              {
-                // outward direction of the face in parameter space
-                dealii::Point<2> outward;
-                outward[f / 2] = (f % 2 == 0) ? -1. : 1.;
-                const std::array<dealii::Point<2>, 2> uv = {
-                  cell->face(f)->vertex(0), cell->face(f)->vertex(1)};
-                const unsigned int b = offset + cell->active_cell_index();
-                if (cell->at_boundary(f))
-                  {
-                    BoundaryFace bf{
-                      b, p, cell->face(f)->boundary_id(), uv, {}, outward};
-                    bf.x[0] = patches[p].point(uv[0]);
-                    bf.x[1] = patches[p].point(uv[1]);
-                    bf.x[2] =
-                      patches[p].point(dealii::Point<2>(0.5 * (uv[0] + uv[1])));
-                    boundary_faces.push_back(bf);
-                  }
-                else if (cell->neighbor(f)->active_cell_index() >
-                         cell->active_cell_index())
-                  inner_faces.push_back(
-                    {b,
-                     offset + cell->neighbor(f)->active_cell_index(),
-                     uv,
-                     outward});
-              }
-        }
-
-      // Contact points of an interface along the edge uv[0] -> uv[1] of a
-      // block of patch p; the normal points along the parameter-space
-      // direction `outward` mapped to 3D (out of block `first`).
-      auto make_interface = [&](const unsigned int                     p,
-                                const std::array<dealii::Point<2>, 2> &uv,
-                                const dealii::Point<2>                &outward,
-                                const unsigned int                     first,
-                                const unsigned int                     second) {
-        Interface interface;
-        interface.first              = first;
-        interface.second             = second;
-        interface.area               = 0;
-        const unsigned int     n     = options.n_stations;
-        const geometry::Patch &patch = patches[p];
-        dealii::Tensor<1, 3>   centre;
-        for (unsigned int k = 0; k < n; ++k)
-          {
-            const double               s  = double(k) / (n - 1);
-            const dealii::Point<2>     q  = uv[0] + s * (uv[1] - uv[0]);
-            const dealii::Point<3>     x  = patch.point(q);
-            const auto                 ts = patch.tangents(q);
-            const auto                 ns = patch.normal(q);
-            const double               t  = geom.thickness(x);
-            const dealii::Tensor<1, 3> edge =
-              ts[0] * (uv[1][0] - uv[0][0]) + ts[1] * (uv[1][1] - uv[0][1]);
-            dealii::Tensor<1, 3> normal = dealii::cross_product_3d(edge, ns);
-            const double         norm   = normal.norm();
-            if (norm == 0)
-              continue;
-            normal /= norm;
-            const dealii::Tensor<1, 3> out =
-              ts[0] * outward[0] + ts[1] * outward[1];
-            if (normal * out < 0)
-              normal = -normal;
-            // trapezoidal weight of the station along the edge
-            const double weight =
-              edge.norm() / (n - 1) * ((k == 0 || k == n - 1) ? 0.5 : 1.0);
-            for (const bool intrados : {true, false})
-              {
-                ContactPoint c;
-                c.position = x + (intrados ? -0.5 : 0.5) * t * ns;
-                c.normal   = normal;
-                c.across   = ns;
-                c.along    = dealii::cross_product_3d(normal, ns);
-                c.area     = 0.5 * t * weight;
-                c.intrados = intrados;
-                interface.points.push_back(c);
-                interface.area += c.area;
-                centre += c.area * c.position;
-              }
-          }
-        if (interface.area > 0)
-          {
-            interface.centre = dealii::Point<3>(centre / interface.area);
-            interface_list.push_back(interface);
-          }
-      };
+        add_patch_blocks(p, boundary_faces, inner_faces);
 
       for (const auto &f : inner_faces)
-        make_interface(
+        add_interface(
           block_list[f.first].patch, f.uv, f.outward, f.first, f.second);
+      connect_boundary_faces(boundary_faces);
+    }
 
+    void
+    BlockModel::add_patch_blocks(const unsigned int         p,
+                                 std::vector<BoundaryFace> &boundary_faces,
+                                 std::vector<InnerFace>    &inner_faces)
+    {
+      const auto  &patches       = geom.patches();
+      const double zeta_gauss[2] = {-0.5 / std::sqrt(3.), 0.5 / std::sqrt(3.)};
+      const double rho_g         = geom.density() * gravity;
+      dealii::Triangulation<2> mesh;
+      dealii::GridGenerator::subdivided_hyper_rectangle(mesh,
+                                                        {options.n_u,
+                                                         options.n_v},
+                                                        dealii::Point<2>(0, 0),
+                                                        dealii::Point<2>(1, 1),
+                                                        true);
+      AssertThrow(vertices[p].size() == mesh.n_vertices(),
+                  dealii::ExcMessage("parameter mesh of patch " +
+                                     std::to_string(p) +
+                                     " has the wrong number of vertices"));
+      // subdivided_hyper_rectangle numbers vertices lexicographically
+      for (const auto &cell : mesh.active_cell_iterators())
+        for (const unsigned int v : cell->vertex_indices())
+          cell->vertex(v) = vertices[p][cell->vertex_index(v)];
+
+      const unsigned int offset = block_list.size();
+      for (const auto &cell : mesh.active_cell_iterators())
+        {
+          Block block;
+          block.patch = p;
+          for (unsigned int v = 0; v < 4; ++v)
+            block.corners[v] = cell->vertex(v);
+          block_list.push_back(block);
+          double               volume = 0;
+          dealii::Tensor<1, 3> first_moment;
+          for (const auto &[uv, w] : quadrature(block_list.size() - 1))
+            {
+              const dealii::Point<3> s  = patches[p].point(uv);
+              const auto             ts = patches[p].tangents(uv);
+              const auto             n  = patches[p].normal(uv);
+              const auto             dn = normal_derivatives(patches[p], uv);
+              const double           t  = geom.thickness(s);
+              for (const double zeta : zeta_gauss)
+                {
+                  // det[x_u, x_v, x_zeta] with x = s + zeta t n; the
+                  // zeta t_u n terms are parallel to x_zeta and drop
+                  const double jac = std::abs(
+                    t *
+                    (n * dealii::cross_product_3d(ts[0] + zeta * t * dn[0],
+                                                  ts[1] + zeta * t * dn[1])));
+                  const dealii::Point<3> x = s + zeta * t * n;
+                  volume += 0.5 * w * jac;
+                  first_moment += 0.5 * w * jac * x;
+                }
+            }
+          block_list.pop_back();
+          AssertThrow(volume > 0 && std::isfinite(volume),
+                      dealii::ExcMessage(
+                        "block " + std::to_string(block_list.size()) +
+                        " of patch " + std::to_string(p) +
+                        " has no volume: degenerate cell or thickness"));
+          block.volume   = volume;
+          block.centroid = dealii::Point<3>(first_moment / volume);
+          block.weight   = rho_g * volume;
+          block_list.push_back(block);
+        }
+
+      for (const auto &cell : mesh.active_cell_iterators())
+        for (const unsigned int f : cell->face_indices())
+          {
+            // outward direction of the face in parameter space
+            dealii::Point<2> outward;
+            outward[f / 2]                           = (f % 2 == 0) ? -1. : 1.;
+            const std::array<dealii::Point<2>, 2> uv = {
+              cell->face(f)->vertex(0), cell->face(f)->vertex(1)};
+            const unsigned int b = offset + cell->active_cell_index();
+            if (cell->at_boundary(f))
+              {
+                BoundaryFace bf{
+                  b, p, cell->face(f)->boundary_id(), uv, {}, outward};
+                bf.x[0] = patches[p].point(uv[0]);
+                bf.x[1] = patches[p].point(uv[1]);
+                bf.x[2] =
+                  patches[p].point(dealii::Point<2>(0.5 * (uv[0] + uv[1])));
+                boundary_faces.push_back(bf);
+              }
+            else if (cell->neighbor(f)->active_cell_index() >
+                     cell->active_cell_index())
+              inner_faces.push_back(
+                {b,
+                 offset + cell->neighbor(f)->active_cell_index(),
+                 uv,
+                 outward});
+          }
+    }
+
+    void
+    BlockModel::add_interface(const unsigned int                     p,
+                              const std::array<dealii::Point<2>, 2> &uv,
+                              const dealii::Point<2>                &outward,
+                              const unsigned int                     first,
+                              const unsigned int                     second)
+    {
+      Interface interface;
+      interface.first              = first;
+      interface.second             = second;
+      interface.area               = 0;
+      const unsigned int     n     = options.n_stations;
+      const geometry::Patch &patch = geom.patches()[p];
+      dealii::Tensor<1, 3>   centre;
+      for (unsigned int k = 0; k < n; ++k)
+        {
+          const double               s  = double(k) / (n - 1);
+          const dealii::Point<2>     q  = uv[0] + s * (uv[1] - uv[0]);
+          const dealii::Point<3>     x  = patch.point(q);
+          const auto                 ts = patch.tangents(q);
+          const auto                 ns = patch.normal(q);
+          const double               t  = geom.thickness(x);
+          const dealii::Tensor<1, 3> edge =
+            ts[0] * (uv[1][0] - uv[0][0]) + ts[1] * (uv[1][1] - uv[0][1]);
+          dealii::Tensor<1, 3> normal = dealii::cross_product_3d(edge, ns);
+          const double         norm   = normal.norm();
+          if (norm == 0)
+            continue;
+          normal /= norm;
+          const dealii::Tensor<1, 3> out =
+            ts[0] * outward[0] + ts[1] * outward[1];
+          if (normal * out < 0)
+            normal = -normal;
+          // trapezoidal weight of the station along the edge
+          const double weight =
+            edge.norm() / (n - 1) * ((k == 0 || k == n - 1) ? 0.5 : 1.0);
+          for (const bool intrados : {true, false})
+            {
+              ContactPoint c;
+              c.position = x + (intrados ? -0.5 : 0.5) * t * ns;
+              c.normal   = normal;
+              c.across   = ns;
+              c.along    = dealii::cross_product_3d(normal, ns);
+              c.area     = 0.5 * t * weight;
+              c.intrados = intrados;
+              interface.points.push_back(c);
+              interface.area += c.area;
+              centre += c.area * c.position;
+            }
+        }
+      if (interface.area > 0)
+        {
+          interface.centre = dealii::Point<3>(centre / interface.area);
+          interface_list.push_back(interface);
+        }
+    }
+
+    void
+    BlockModel::connect_boundary_faces(
+      const std::vector<BoundaryFace> &boundary_faces)
+    {
+      const auto &patches = geom.patches();
       // boundary faces: glued to another patch's face, on a support, or free
       const double      tolerance = 1e-8 * size;
       std::vector<bool> used(boundary_faces.size(), false);
@@ -440,7 +463,7 @@ namespace masonry
               if (same)
                 {
                   used[a] = used[b] = true;
-                  make_interface(
+                  add_interface(
                     fa.patch, fa.uv, fa.outward, fa.block, fb.block);
                   break;
                 }
@@ -455,7 +478,7 @@ namespace masonry
           if (used[a] || options.supported_edges.count(label) == 0)
             continue;
           const unsigned int before = interface_list.size();
-          make_interface(
+          add_interface(
             fa.patch, fa.uv, fa.outward, fa.block, Interface::support);
           if (interface_list.size() > before)
             interface_list.back().support_label = label;

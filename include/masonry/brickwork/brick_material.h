@@ -45,7 +45,7 @@ namespace masonry
      * damage_names(): largest values in curve.csv and summary.json, the
      * IMPL-EX damage error).
      */
-    class BrickMaterial
+    class BrickMaterial : public PointLaw
     {
     public:
       /** Parameters live in `subsection Brick material`. */
@@ -61,8 +61,6 @@ namespace masonry
       /** Entries shared by all brick materials: none. */
       static void
       declare_common_parameters(dealii::ParameterHandler &prm);
-
-      virtual ~BrickMaterial() = default;
 
       /** Read the shared entries: none. */
       virtual void
@@ -177,49 +175,6 @@ namespace masonry
        */
       virtual dealii::SymmetricTensor<4, 3>
       elastic_stiffness() const;
-
-      /**
-       * The state variables of a point (names, sizes): what evaluate()
-       * reads from `old` and writes to `updated`. None by default.
-       */
-      virtual std::vector<StateVariable>
-      state_variables() const;
-
-      /** The state of a point before any loading: zeros by default. */
-      virtual void
-      initial_state(StateView state) const;
-
-      /**
-       * Names of the quantities written for each cell (averaged over its
-       * points) to the VTU/HDF5 output; by default every component of the
-       * state variables.
-       */
-      virtual std::vector<std::string>
-      reported_quantities() const;
-
-      /** The values of reported_quantities() for @p state. */
-      virtual void
-      report(ConstStateView state, dealii::ArrayView<double> values) const;
-
-      /**
-       * Names of the damage variables (0 intact to 1), reported as their
-       * largest value (curve.csv: brick_NAME, summary.json: max_brick_NAME)
-       * and whose extrapolation error controls the IMPL-EX step. None by
-       * default.
-       */
-      virtual std::vector<std::string>
-      damage_names() const;
-
-      /** The values of damage_names() for @p state. */
-      virtual void
-      damages(ConstStateView state, dealii::ArrayView<double> values) const;
-
-      /**
-       * The values this material computed from its inputs (see
-       * DerivedValue); none by default.
-       */
-      virtual std::vector<DerivedValue>
-      derived_values() const;
 
       /**
        * The unit's uniaxial strengths (Pa) and tensile fracture energy

@@ -52,7 +52,7 @@ namespace masonry
      * slips. Like a brick material, a law declares its own state
      * variables, elastic tangent and reported quantities.
      */
-    class InterfaceLaw
+    class InterfaceLaw : public PointLaw
     {
     public:
       /** Parameters live in `subsection Interface law`. */
@@ -68,8 +68,6 @@ namespace masonry
       /** Entries shared by all laws: the penalty stiffnesses. */
       static void
       declare_common_parameters(dealii::ParameterHandler &prm);
-
-      virtual ~InterfaceLaw() = default;
 
       /** Read the penalty stiffnesses. */
       virtual void
@@ -126,46 +124,6 @@ namespace masonry
        */
       virtual Local33
       elastic_tangent() const;
-
-      /** The state variables of a point (names, sizes); none by default. */
-      virtual std::vector<StateVariable>
-      state_variables() const;
-
-      /** The state before any loading: zeros by default. */
-      virtual void
-      initial_state(StateView state) const;
-
-      /**
-       * Names of the quantities written for each joint face (averaged over
-       * its points) to interfaces.pvd; by default every component of the
-       * state variables.
-       */
-      virtual std::vector<std::string>
-      reported_quantities() const;
-
-      /** The values of reported_quantities() for @p state. */
-      virtual void
-      report(ConstStateView state, dealii::ArrayView<double> values) const;
-
-      /**
-       * Names of the damage variables (0 to 1): their largest value is
-       * max_damage in curve.csv, a damaged joint has no initial tangent,
-       * and their extrapolation error controls the IMPL-EX step. None by
-       * default.
-       */
-      virtual std::vector<std::string>
-      damage_names() const;
-
-      /** The values of damage_names() for @p state. */
-      virtual void
-      damages(ConstStateView state, dealii::ArrayView<double> values) const;
-
-      /**
-       * The values this law computed from its inputs (see DerivedValue);
-       * none by default.
-       */
-      virtual std::vector<DerivedValue>
-      derived_values() const;
 
       /** Whether the law is linear (tangent independent of the state). */
       virtual bool

@@ -59,6 +59,66 @@ namespace masonry
       /** How it was obtained (formula and inputs), for log.txt. */
       std::string how;
     };
+
+    /**
+     * What every law of the model (brick material, interface law) declares
+     * about the state of its points, so that the model stores, initialises,
+     * checkpoints, reports and extrapolates it without naming one of its
+     * variables: the state variables, their initial values, the reported
+     * quantities (averaged over the points of a cell or a joint face in the
+     * VTU output), the damage variables and the values derived from the
+     * inputs.
+     */
+    class PointLaw
+    {
+    public:
+      virtual ~PointLaw() = default;
+
+      /**
+       * The state variables of a point (names, sizes): what the law's
+       * evaluation reads from the old state and writes to the updated one.
+       * None by default.
+       */
+      virtual std::vector<StateVariable>
+      state_variables() const;
+
+      /** The state of a point before any loading: zeros by default. */
+      virtual void
+      initial_state(StateView state) const;
+
+      /**
+       * Names of the quantities written for each cell or joint face
+       * (averaged over its points) to the VTU/HDF5 output; by default every
+       * component of the state variables.
+       */
+      virtual std::vector<std::string>
+      reported_quantities() const;
+
+      /** The values of reported_quantities() for @p state. */
+      virtual void
+      report(ConstStateView state, dealii::ArrayView<double> values) const;
+
+      /**
+       * Names of the damage variables (0 intact to 1), reported as their
+       * largest value (a brick material's in curve.csv as brick_NAME and in
+       * summary.json as max_brick_NAME; an interface law's as max_damage in
+       * curve.csv) and whose extrapolation error controls the IMPL-EX step;
+       * a damaged joint point has no initial tangent. None by default.
+       */
+      virtual std::vector<std::string>
+      damage_names() const;
+
+      /** The values of damage_names() for @p state. */
+      virtual void
+      damages(ConstStateView state, dealii::ArrayView<double> values) const;
+
+      /**
+       * The values this law computed from its inputs (see DerivedValue);
+       * none by default.
+       */
+      virtual std::vector<DerivedValue>
+      derived_values() const;
+    };
   } // namespace brickwork
 } // namespace masonry
 

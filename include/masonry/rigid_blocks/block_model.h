@@ -183,8 +183,34 @@ namespace masonry
       length_scale() const;
 
     private:
+      struct BoundaryFace;
+      struct InnerFace;
+
       void
       build();
+      /** The blocks of patch @p p (cells of its parameter mesh); its faces
+       * into @p boundary_faces and @p inner_faces. */
+      void
+      add_patch_blocks(const unsigned int         p,
+                       std::vector<BoundaryFace> &boundary_faces,
+                       std::vector<InnerFace>    &inner_faces);
+      /**
+       * The interface along the edge uv[0] -> uv[1] of a block of patch
+       * @p p between blocks @p first and @p second (or a support): contact
+       * points at the stations, normal along the parameter-space direction
+       * @p outward mapped to 3D (out of block @p first). None if the edge
+       * has no area.
+       */
+      void
+      add_interface(const unsigned int                     p,
+                    const std::array<dealii::Point<2>, 2> &uv,
+                    const dealii::Point<2>                &outward,
+                    const unsigned int                     first,
+                    const unsigned int                     second);
+      /** Boundary faces glued to another patch's face, on a support, or
+       * free. */
+      void
+      connect_boundary_faces(const std::vector<BoundaryFace> &boundary_faces);
 
       const geometry::Interface                 &geom;
       Discretisation                             options;

@@ -8,12 +8,12 @@
 #ifndef masonry_brickwork_model_checkpoint_h
 #define masonry_brickwork_model_checkpoint_h
 
+#include <masonry/brickwork/curve.h>
 #include <masonry/core/run_context.h>
 
 #include <string>
 #include <vector>
 
-#include "curve.h"
 #include "linear_solvers.h"
 #include "point_states.h"
 #include "specimen.h"

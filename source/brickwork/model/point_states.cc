@@ -19,7 +19,8 @@ namespace masonry
                               const std::vector<double>       &initial,
                               const std::vector<unsigned int> &points)
       {
-        n = initial.size();
+        n     = initial.size();
+        count = n_points;
         old_values.resize(n_points * n);
         for (unsigned int p = 0; p < n_points; ++p)
           std::copy(initial.begin(), initial.end(), old_values.begin() + p * n);

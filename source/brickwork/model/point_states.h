@@ -32,6 +32,13 @@ namespace masonry
                    const std::vector<double>       &initial,
                    const std::vector<unsigned int> &checkpointed);
 
+        /** Number of points. */
+        unsigned int
+        n_points() const
+        {
+          return count;
+        }
+
         /** Doubles per point. */
         unsigned int
         n_values() const
@@ -89,7 +96,7 @@ namespace masonry
         void
         scatter(const std::vector<double> &data);
 
-        unsigned int              n = 0;
+        unsigned int              n = 0, count = 0;
         std::vector<double>       old_values, new_values, older_values;
         std::vector<unsigned int> checkpointed;
       };

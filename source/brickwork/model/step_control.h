@@ -7,12 +7,11 @@
 #ifndef masonry_brickwork_model_step_control_h
 #define masonry_brickwork_model_step_control_h
 
+#include <masonry/brickwork/curve.h>
 #include <masonry/brickwork/wallette.h>
 #include <masonry/core/json.h>
 
 #include <memory>
-
-#include "curve.h"
 
 namespace masonry
 {

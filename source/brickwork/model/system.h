@@ -52,6 +52,16 @@ namespace masonry
         void
         make_constraints();
 
+        /** A copy of the solution with every relevant entry on this rank
+         * (for readers of a const System: the postprocessors). */
+        Vector
+        ghosted_copy() const
+        {
+          Vector v(owned, relevant, comm);
+          v = u;
+          return v;
+        }
+
         /** The platen displacement @p disp (m, along the direction) into
          * the platen entries of @p v. */
         void

@@ -10,7 +10,7 @@
 #include <fstream>
 #include <iomanip>
 
-#include "postprocessor.h"
+#include "builtin.h"
 
 namespace masonry
 {
@@ -38,7 +38,7 @@ namespace masonry
         CalculiX::finish(const ModelView &view, Json &)
         {
           const auto          &settings      = view.settings;
-          const System::Vector ghosted       = view.ghosted_solution();
+          const System::Vector ghosted       = view.system.ghosted_copy();
           const auto          &triangulation = view.system.triangulation;
           // the nodes used by the cells, numbered from 1 in vertex order
           const auto               &all = triangulation.get_vertices();

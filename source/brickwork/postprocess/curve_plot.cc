@@ -10,7 +10,7 @@
 
 #include <filesystem>
 
-#include "postprocessor.h"
+#include "builtin.h"
 
 namespace masonry
 {

@@ -14,7 +14,7 @@
 #include <iomanip>
 #include <limits>
 
-#include "postprocessor.h"
+#include "builtin.h"
 
 namespace masonry
 {
@@ -22,8 +22,6 @@ namespace masonry
   {
     namespace postprocess
     {
-      using model::CurvePoint;
-
       namespace
       {
         /** Results of one load-unload cycle. */

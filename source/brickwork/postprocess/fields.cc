@@ -20,7 +20,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "postprocessor.h"
+#include "builtin.h"
 
 namespace masonry
 {
@@ -174,7 +174,7 @@ namespace masonry
                        const unsigned int step,
                        const double       time)
         {
-          const System::Vector ghosted = view.ghosted_solution();
+          const System::Vector ghosted = view.system.ghosted_copy();
           DataOut<3>           data_out;
           data_out.attach_dof_handler(view.system.dof_handler);
           std::vector<std::string> names(3, "displacement");

@@ -13,7 +13,7 @@
 #include <iomanip>
 #include <sstream>
 
-#include "postprocessor.h"
+#include "builtin.h"
 
 namespace masonry
 {
@@ -93,7 +93,7 @@ namespace masonry
                           "joint_type_bed0_head1_collar2"});
           std::vector<std::vector<double>> values(names.size(),
                                                   std::vector<double>(n, 0));
-          const System::Vector             ghosted = view.ghosted_solution();
+          const System::Vector             ghosted = view.system.ghosted_copy();
           std::vector<double>              reported;
           for (unsigned int i = 0; i < n; ++i)
             if (faces[i].owned)

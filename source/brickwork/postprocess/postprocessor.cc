@@ -2,7 +2,7 @@
  * @file
  * Default hooks of the postprocessors and the list of a run.
  */
-#include "postprocessor.h"
+#include <masonry/brickwork/postprocessor.h>
 
 namespace masonry
 {

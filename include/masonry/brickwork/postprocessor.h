@@ -1,21 +1,20 @@
 /**
  * @file
  * The outputs of a wallette run as postprocessors (ASPECT's model): each
- * reads the model through a read-only view at fixed points of the step loop
- * and writes its files; what it must remember across a restart it saves
- * into the checkpoint.
+ * reads the model through a read-only view (ModelView) at fixed points of
+ * the step loop and writes its files; what it must remember across a
+ * restart it saves into the checkpoint. A postprocessor can live in a shared
+ * library loaded with `Additional shared libraries' (see
+ * contrib/examples/wallette_postprocessor).
  */
-#ifndef masonry_brickwork_postprocess_postprocessor_h
-#define masonry_brickwork_postprocess_postprocessor_h
+#ifndef masonry_brickwork_postprocessor_h
+#define masonry_brickwork_postprocessor_h
 
+#include <masonry/brickwork/view.h>
 #include <masonry/core/json.h>
 #include <masonry/core/plugins.h>
 
-#include <memory>
 #include <string>
-#include <vector>
-
-#include "../model/view.h"
 
 namespace masonry
 {
@@ -23,9 +22,6 @@ namespace masonry
   {
     namespace postprocess
     {
-      using model::ModelView;
-      using model::System;
-
       /**
        * Base class of the wallette postprocessors, a plugin family with a
        * list (`subsection Postprocess / subsection Wallette / set List of
