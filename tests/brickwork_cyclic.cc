@@ -83,12 +83,6 @@ namespace
       << extra << "end\nend\nsubsection Bond\nset Pattern = stack\nend\n";
     return m.str();
   }
-} // namespace
-
-int
-main(int argc, char **argv)
-{
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
 
   // --- one hexahedron, cyclic uniaxial compression ------------------------
   const std::string hex =
@@ -98,52 +92,58 @@ main(int argc, char **argv)
     "free\nset Protocol = cyclic\nset Cycle amplitudes = 0.002, 0.0045, "
     "0.007, 0.012\nset Target strain = 0.012\nset Number of steps = "
     "600\nset Unloading stress = 0\n";
-  const masonry::Json s = run("hex", prm(hex, material()));
   // the enlarged brick 0.225 x 0.1125 x 0.075 m is the one cell
   const double l = std::cbrt(0.225 * 0.1125 * 0.075);
-  check(s.at("status").as_string() == "completed", "hex: completed");
+
+  void
+  check_cycles()
   {
-    std::ifstream in("results/hex/cycles.csv");
-    std::string   line;
-    std::getline(in, line);
-    double       peak = 0, slope = 0, residual = 0, energy = 0, previous = 0;
-    unsigned int n = 0, turns = 0;
-    const double amplitudes[4] = {0.002, 0.0045, 0.007, 0.012};
-    while (std::getline(in, line))
-      {
-        std::vector<double> v;
-        std::stringstream   cells(line);
-        std::string         cell;
-        while (std::getline(cells, cell, ','))
-          v.push_back(std::stod(cell));
-        // cycle,amplitude,peak,strain_at_peak,residual,modulus,ratio,energy
-        const double e = v[1];
-        const double d = 1 - sigma_c(e, l) / (E0 * (e - plastic_c(e, l)));
-        slope          = std::max(slope, relative(v[5], (1 - d) * E0));
-        residual = std::max(residual, std::abs(v[4] - plastic_c(e, l)) / eps_c);
-        const double D = dissipated_c(e, l);
-        energy         = std::max(energy, relative(v[7], D - previous));
-        previous       = D;
-        ++n;
-      }
-    // the turning point of each cycle: its largest strain
-    for (const auto &row : curve("hex"))
-      if (row[8] > 0 &&
-          std::abs(row[2] - amplitudes[int(row[8]) - 1]) < 1e-12 * eps_c)
+    const masonry::Json s = run("hex", prm(hex, material()));
+    check(s.at("status").as_string() == "completed", "hex: completed");
+    {
+      std::ifstream in("results/hex/cycles.csv");
+      std::string   line;
+      std::getline(in, line);
+      double       peak = 0, slope = 0, residual = 0, energy = 0, previous = 0;
+      unsigned int n = 0, turns = 0;
+      const double amplitudes[4] = {0.002, 0.0045, 0.007, 0.012};
+      while (std::getline(in, line))
         {
-          peak = std::max(peak, relative(row[4], sigma_c(row[2], l)));
-          ++turns;
+          std::vector<double> v;
+          std::stringstream   cells(line);
+          std::string         cell;
+          while (std::getline(cells, cell, ','))
+            v.push_back(std::stod(cell));
+          // cycle,amplitude,peak,strain_at_peak,residual,modulus,ratio,energy
+          const double e = v[1];
+          const double d = 1 - sigma_c(e, l) / (E0 * (e - plastic_c(e, l)));
+          slope          = std::max(slope, relative(v[5], (1 - d) * E0));
+          residual =
+            std::max(residual, std::abs(v[4] - plastic_c(e, l)) / eps_c);
+          const double D = dissipated_c(e, l);
+          energy         = std::max(energy, relative(v[7], D - previous));
+          previous       = D;
+          ++n;
         }
-    check(n == 4, "hex: 4 cycles");
-    check(turns >= 4, "hex: the platen turns at the 4 amplitudes");
-    check(peak < 1e-8,
-          "hex: the stress at the turning points is the input curve's "
-          "(1e-8)");
-    check(slope < 1e-8, "hex: unloading slope (1 - d_c) E0 (1e-8)");
-    check(residual < 1e-8,
-          "hex: residual strain = plastic strain of the envelope (1e-8)");
-    check(energy < 1e-4,
-          "hex: loop area = dissipated energy of the cycle (1e-4)");
+      // the turning point of each cycle: its largest strain
+      for (const auto &row : curve("hex"))
+        if (row[8] > 0 &&
+            std::abs(row[2] - amplitudes[int(row[8]) - 1]) < 1e-12 * eps_c)
+          {
+            peak = std::max(peak, relative(row[4], sigma_c(row[2], l)));
+            ++turns;
+          }
+      check(n == 4, "hex: 4 cycles");
+      check(turns >= 4, "hex: the platen turns at the 4 amplitudes");
+      check(peak < 1e-8,
+            "hex: the stress at the turning points is the input curve's "
+            "(1e-8)");
+      check(slope < 1e-8, "hex: unloading slope (1 - d_c) E0 (1e-8)");
+      check(residual < 1e-8,
+            "hex: residual strain = plastic strain of the envelope (1e-8)");
+      check(energy < 1e-4,
+            "hex: loop area = dissipated energy of the cycle (1e-4)");
+    }
   }
 
   // --- the same hexahedron, two cycles per amplitude -----------------------
@@ -153,6 +153,8 @@ main(int argc, char **argv)
   // and plastic strain do not change), so the second cycle meets the first
   // cycle's unloading at the turning point: the common point and the
   // stability point are the envelope stress at the amplitude
+  void
+  check_repeated_cycles()
   {
     const std::string repeat =
       "set Courses = 1\nset Length in bricks = 1\n"
@@ -190,87 +192,107 @@ main(int argc, char **argv)
   // --- one row of cubes in tension: G_f x area for every size ------------
   // (Poisson's ratio 0: uniaxial strain is uniaxial stress, and Newton does
   // not meet the lateral principal stresses at the kink of the split)
-  const std::string nu0 = "set Poisson's ratio = 0\n";
-  for (const unsigned int n : {1u, 2u, 4u})
-    {
-      const double       h = 0.1 / n;
-      const double       w = G_f / (f_t * h) - f_t / (2 * E0);
-      std::ostringstream t;
-      t << std::setprecision(17) << "set Brick length = 0.09\n"
-        << "set Brick width = 0.09\nset Brick height = " << h - 0.01
-        << "\nset Joint thickness = 0.01\nset Courses = 1\n"
-        << "set Length in bricks = 1\nset Elements along the length = " << n
-        << "\nset Elements along the width = " << n
-        << "\nset Elements along the height = 1\n"
-        << "set Platen lateral restraint = free\n"
-        << "set Platen direction = 0, 0, 1\nset Target strain = "
-        << f_t / E0 + 30 * w << "\nset Number of steps = 2000\n";
-      const std::string name = "row_" + std::to_string(n);
-      const auto        r    = run(name, prm(t.str(), material(nu0)));
-      const double      work = r.at("external_work").as_number();
-      check(relative(work, G_f * 0.01) < 1e-3,
-            name + ": work to separation = G_f x area (1e-3)");
-      // the curve is the closed-form tension envelope at its strains
-      double envelope = 0;
-      for (const auto &row : curve(name))
-        {
-          const double e = row[2], e0 = f_t / E0;
-          const double expected =
-            e <= e0 ? E0 * e : f_t * std::exp(-(e - e0) / w);
-          envelope = std::max(envelope, std::abs(row[4] - expected) / f_t);
-        }
-      check(envelope < 1e-8,
-            name + ": the curve is the tension envelope (1e-8 of f_t)");
-      check(r.at("peak_stress").as_number() <= f_t * (1 + 1e-12) &&
-              r.at("peak_stress").as_number() > 0.99 * f_t,
-            name + ": peak stress within 1 % below f_t (sampled)");
-      if (n == 4)
-        {
-          // deletion at 5 f_t / E0, at most 3 cells a step, 16 cells
-          const double threshold = 5 * f_t / E0;
-          const auto   d         = run("deletion",
-                             prm(t.str() + "set Deletion strain = " +
-                                   std::to_string(threshold) +
-                                   "\nset Maximum deletions per step = 3\n",
-                                 material()));
-          const auto   rows      = curve("deletion");
-          bool         ok        = true;
-          unsigned int last      = 0;
-          for (unsigned int i = 1; i < rows.size(); ++i)
-            {
-              const unsigned int k = rows[i][10];
-              // none before the threshold, then 3 more per step up to 16
-              const unsigned int expected =
-                rows[i][2] <= threshold ? 0 : std::min(16u, last + 3);
-              if (k != expected)
-                ok = false;
-              last = k;
-            }
-          check(ok, "deletion: cells go after the threshold, 3 per step");
-          check(d.at("status").as_string() == "completed" &&
-                  d.at("deleted_cells").as_number() == 16 &&
-                  rows.back()[4] == 0,
-                "deletion: all 16 cells gone, the run completes, force 0");
-        }
-    }
+  void
+  check_tension_rows()
+  {
+    const std::string nu0 = "set Poisson's ratio = 0\n";
+    for (const unsigned int n : {1u, 2u, 4u})
+      {
+        const double       h = 0.1 / n;
+        const double       w = G_f / (f_t * h) - f_t / (2 * E0);
+        std::ostringstream t;
+        t << std::setprecision(17) << "set Brick length = 0.09\n"
+          << "set Brick width = 0.09\nset Brick height = " << h - 0.01
+          << "\nset Joint thickness = 0.01\nset Courses = 1\n"
+          << "set Length in bricks = 1\nset Elements along the length = " << n
+          << "\nset Elements along the width = " << n
+          << "\nset Elements along the height = 1\n"
+          << "set Platen lateral restraint = free\n"
+          << "set Platen direction = 0, 0, 1\nset Target strain = "
+          << f_t / E0 + 30 * w << "\nset Number of steps = 2000\n";
+        const std::string name = "row_" + std::to_string(n);
+        const auto        r    = run(name, prm(t.str(), material(nu0)));
+        const double      work = r.at("external_work").as_number();
+        check(relative(work, G_f * 0.01) < 1e-3,
+              name + ": work to separation = G_f x area (1e-3)");
+        // the curve is the closed-form tension envelope at its strains
+        double envelope = 0;
+        for (const auto &row : curve(name))
+          {
+            const double e = row[2], e0 = f_t / E0;
+            const double expected =
+              e <= e0 ? E0 * e : f_t * std::exp(-(e - e0) / w);
+            envelope = std::max(envelope, std::abs(row[4] - expected) / f_t);
+          }
+        check(envelope < 1e-8,
+              name + ": the curve is the tension envelope (1e-8 of f_t)");
+        check(r.at("peak_stress").as_number() <= f_t * (1 + 1e-12) &&
+                r.at("peak_stress").as_number() > 0.99 * f_t,
+              name + ": peak stress within 1 % below f_t (sampled)");
+        if (n == 4)
+          {
+            // deletion at 5 f_t / E0, at most 3 cells a step, 16 cells
+            const double threshold = 5 * f_t / E0;
+            const auto   d         = run("deletion",
+                               prm(t.str() + "set Deletion strain = " +
+                                     std::to_string(threshold) +
+                                     "\nset Maximum deletions per step = 3\n",
+                                   material()));
+            const auto   rows      = curve("deletion");
+            bool         ok        = true;
+            unsigned int last      = 0;
+            for (unsigned int i = 1; i < rows.size(); ++i)
+              {
+                const unsigned int k = rows[i][10];
+                // none before the threshold, then 3 more per step up to 16
+                const unsigned int expected =
+                  rows[i][2] <= threshold ? 0 : std::min(16u, last + 3);
+                if (k != expected)
+                  ok = false;
+                last = k;
+              }
+            check(ok, "deletion: cells go after the threshold, 3 per step");
+            check(d.at("status").as_string() == "completed" &&
+                    d.at("deleted_cells").as_number() == 16 &&
+                    rows.back()[4] == 0,
+                  "deletion: all 16 cells gone, the run completes, force 0");
+          }
+      }
+  }
 
   // --- checkpoint and resume ----------------------------------------------
-  const std::string short_hex = hex + "set Number of steps = 60\n";
-  run("full", prm(short_hex, material()));
-  const auto stopped =
-    run("resumed", prm(short_hex + "set Maximum steps = 37\n", material()));
-  check(stopped.at("status").as_string() == "interrupted",
-        "resume: the first part stops as interrupted");
-  const auto resumed =
-    run("resumed", prm(short_hex + "set Resume = true\n", material()));
-  const auto a = curve("full"), b = curve("resumed");
-  double     diff = a.size() == b.size() ? 0 : 1;
-  for (unsigned int i = 0; a.size() == b.size() && i < a.size(); ++i)
-    for (unsigned int j = 0; j < a[i].size(); ++j)
-      diff =
-        std::max(diff,
-                 std::abs(a[i][j] - b[i][j]) / std::max(1., std::abs(a[i][j])));
-  check(resumed.at("status").as_string() == "completed" && diff < 1e-12,
-        "resume: the resumed run reproduces the uninterrupted curve "
-        "(1e-12)");
+  void
+  check_resume()
+  {
+    const std::string short_hex = hex + "set Number of steps = 60\n";
+    run("full", prm(short_hex, material()));
+    const auto stopped =
+      run("resumed", prm(short_hex + "set Maximum steps = 37\n", material()));
+    check(stopped.at("status").as_string() == "interrupted",
+          "resume: the first part stops as interrupted");
+    const auto resumed =
+      run("resumed", prm(short_hex + "set Resume = true\n", material()));
+    const auto a = curve("full"), b = curve("resumed");
+    double     diff = a.size() == b.size() ? 0 : 1;
+    for (unsigned int i = 0; a.size() == b.size() && i < a.size(); ++i)
+      for (unsigned int j = 0; j < a[i].size(); ++j)
+        diff = std::max(diff,
+                        std::abs(a[i][j] - b[i][j]) /
+                          std::max(1., std::abs(a[i][j])));
+    check(resumed.at("status").as_string() == "completed" && diff < 1e-12,
+          "resume: the resumed run reproduces the uninterrupted curve "
+          "(1e-12)");
+  }
+
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+
+  check_cycles();
+  check_repeated_cycles();
+  check_tension_rows();
+  check_resume();
 }

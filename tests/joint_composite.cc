@@ -188,24 +188,24 @@ namespace
     t_end = t_prev;
     return W;
   }
-} // namespace
-
-int
-main()
-{
+  // the reference joint and the closed-form ingredients of every check
   const CompositeJoint::Parameters p = reference();
   const CompositeJoint             law(p);
   const double kn = p.normal_stiffness, ks = p.shear_stiffness;
   const double a = p.tensile_strength / p.mode_I_energy,
                b = p.cohesion / p.mode_II_energy;
-  auto tanphi    = [&](const double xi) {
+  double
+  tanphi(const double xi)
+  {
     return p.friction +
            (p.residual_friction - p.friction) * (1 - std::exp(-xi));
-  };
+  }
   const CapCurve cap(p);
 
   // ---------------------------------------------------------------------
   // elastic
+  void
+  check_elastic()
   {
     CompositeJointState  s0, s;
     Vector3              t;
@@ -227,6 +227,8 @@ main()
   // ---------------------------------------------------------------------
   // tension from a virgin joint in one step: sigma = f_t0 exp(-a w),
   // w = u_n - sigma / k_n
+  void
+  check_tension()
   {
     const double u_n       = 5 * p.tensile_strength / kn + 3e-5;
     const double sigma_ref = bisect(
@@ -248,6 +250,8 @@ main()
 
   // shear with friction under sigma = -0.5 MPa, slip along (3, 4) / 5:
   // tau = c0 exp(-xi) + 0.5e6 tan phi(xi), xi = b (s - tau / k_s)
+  void
+  check_shear()
   {
     const double sigma = -0.5e6, s_slip = 2e-4;
     const double u_n     = sigma / kn;
@@ -275,6 +279,8 @@ main()
 
   // tension-shear corner: both surfaces with xi = sqrt((a l1)^2 + (b l2)^2),
   // l1 = u_p,n, l2 = |u_p,s|
+  void
+  check_tension_shear_corner()
   {
     const Vector3        u{{3e-5, 1.5e-4, 0}};
     CompositeJointState  s0, s;
@@ -298,6 +304,8 @@ main()
 
   // cap alone (associated): C_nn s^2 + C_ss tau^2 = sbar(|u_p|)^2 and u_p
   // parallel to (2 C_nn sigma, 2 C_ss tau)
+  void
+  check_cap()
   {
     const Vector3        u{{-6e6 / kn, 0.5e6 / ks, 0}};
     CompositeJointState  s0, s;
@@ -321,6 +329,8 @@ main()
   }
 
   // shear-cap corner: u_p = l2 (tan psi, 1) + l3 (2 C_nn sigma, 2 C_ss tau)
+  void
+  check_shear_cap_corner()
   {
     const Vector3        u{{-2e6 / kn, 3e6 / ks, 0}};
     CompositeJointState  s0, s;
@@ -350,6 +360,8 @@ main()
 
   // ---------------------------------------------------------------------
   // energies
+  void
+  check_energy_mode_I()
   {
     CompositeJointState s;
     Vector3             t;
@@ -359,6 +371,9 @@ main()
     check(std::abs(W / p.mode_I_energy - 1) < 0.01,
           "mode I: dissipated energy = G_I within 1 %");
   }
+
+  void
+  check_energy_mode_II()
   {
     CompositeJointState s;
     Vector3             t;
@@ -369,6 +384,9 @@ main()
           "mode II at zero normal stress: dissipated energy = G_II within "
           "1 %");
   }
+
+  void
+  check_energy_mode_II_compressed()
   {
     // constant compression (u_n fixed, no dilatancy) with a stronger cap
     CompositeJoint::Parameters q = p;
@@ -395,6 +413,8 @@ main()
   // ---------------------------------------------------------------------
   // cap curve under uniaxial closing: sigma = -sbar(kappa) at
   // u_n = -(kappa + sbar(kappa) / k_n), kappa over all three branches
+  void
+  check_cap_curve()
   {
     CompositeJointState s;
     double              err = 0, u_prev = 0, t_prev = 0, W = 0;
@@ -429,6 +449,8 @@ main()
 
   // ---------------------------------------------------------------------
   // crack closure
+  void
+  check_crack_closure()
   {
     CompositeJointState s;
     Vector3             t;
@@ -456,6 +478,8 @@ main()
   // IMPL-EX: the plastic jump extrapolated linearly from two converged
   // states (ratio 1: u_p* = 2 u_p,old - u_p,older) and frozen:
   // t = D_e (u - u_p*), tangent D_e; an open crack closes without traction
+  void
+  check_impl_ex()
   {
     CompositeJointState older, old, s;
     Vector3             t;
@@ -492,6 +516,8 @@ main()
 
   // ---------------------------------------------------------------------
   // tangent against central differences
+  void
+  check_tangent()
   {
     struct Case
     {
@@ -546,6 +572,8 @@ main()
   // random cyclic paths (jump increments 1e-6 to 1e-3 m, biased to
   // compression in half of each path): every return is found and the
   // traction lies inside the three surfaces of the state it returns
+  void
+  check_random_paths()
   {
     CompositeJoint::Parameters q = p;
     q.dilatancy                  = 0.1;
@@ -602,6 +630,8 @@ main()
   }
 
   // a softening steeper than the penalty is refused, naming the entry
+  void
+  check_snap_back()
   {
     CompositeJoint::Parameters q = p;
     q.cap_energy                 = 100;
@@ -627,6 +657,8 @@ main()
   // (with dilatancy 0.1, so that normal and shear are coupled). Every step
   // converges to 1e-10 of the strengths in at most 5 iterations (2 and 3
   // are needed; with the elastic tangent neither path converges in 30).
+  void
+  check_newton()
   {
     CompositeJoint::Parameters q = p;
     q.dilatancy                  = 0.1;
@@ -698,6 +730,8 @@ main()
   // ---------------------------------------------------------------------
   // Lourenço-Rots penalties: E_b = 10 GPa, E_m = 2 GPa, h_m = 10 mm give
   // k_n = 2.5e11 Pa/m; nu = 0.15 and 0.2: G_b = 4.3478 GPa, G_m = 0.8333 GPa
+  void
+  check_penalties()
   {
     const auto   k  = CompositeJoint::penalties(10e9, 0.15, 2e9, 0.2, 0.01);
     const double Gb = 10e9 / 2.3, Gm = 2e9 / 2.4;
@@ -716,5 +750,28 @@ main()
       }
     check(threw, "penalties: a mortar stiffer than the unit is refused");
   }
+
+} // namespace
+
+int
+main()
+{
+  check_elastic();
+  check_tension();
+  check_shear();
+  check_tension_shear_corner();
+  check_cap();
+  check_shear_cap_corner();
+  check_energy_mode_I();
+  check_energy_mode_II();
+  check_energy_mode_II_compressed();
+  check_cap_curve();
+  check_crack_closure();
+  check_impl_ex();
+  check_tangent();
+  check_random_paths();
+  check_snap_back();
+  check_newton();
+  check_penalties();
   return all_ok ? 0 : 1;
 }

@@ -58,20 +58,16 @@ namespace
               << (s.status == expected ? "" : " (" + s.message + ")")
               << std::endl;
   }
-} // namespace
-
-int
-main()
-{
-  const std::vector<Config> configs = all_configs();
 
   // (1) max 3x + 2y  s.t.  x + y <= 4,  x + 3y <= 6,  0 <= x <= 3, y >= 0.
   // Vertices of the feasible polygon: (0,0) -> 0, (3,0) -> 9, (3,1) -> 11,
   // (0,2) -> 4, and x + y = 4 meets x + 3y = 6 at (3,1) as well. Optimum
   // (3, 1) with value 11 (unique: the objective gradient (3,2) lies strictly
   // inside the cone of the active normals (1,1), (1,0)).
-  LinearProgram lp1;
+  LinearProgram
+  make_lp1()
   {
+    LinearProgram      lp1;
     const unsigned int x = lp1.add_column(3, 0, 3, "x");
     const unsigned int y = lp1.add_column(2, 0, infinity, "y");
     const unsigned int r = lp1.add_row(-infinity, 4, "r1");
@@ -81,6 +77,7 @@ main()
     lp1.add_entry(s, x, 1);
     lp1.add_entry(s, y, 2); // duplicate entries: 2 + 1 = 3
     lp1.add_entry(s, y, 1);
+    return lp1;
   }
 
   // (2) max 5x + 4y  s.t.  6x + 4y <= 24,  x + 2y <= 6,  x, y >= 0.
@@ -88,8 +85,10 @@ main()
   // A^T y = c: 6 y1 + y2 = 5, 4 y1 + 2 y2 = 4 -> y1 = 0.75, y2 = 0.5
   // (d(21)/d(24) = 0.75 > 0 as a larger bound gives a larger maximum);
   // b^T y = 18 + 3 = 21.
-  LinearProgram lp2;
+  LinearProgram
+  make_lp2()
   {
+    LinearProgram lp2;
     lp2.add_column(5, 0, infinity);
     lp2.add_column(4, 0, infinity);
     lp2.add_row(-infinity, 24);
@@ -98,6 +97,7 @@ main()
     lp2.add_entry(0, 1, 4);
     lp2.add_entry(1, 0, 1);
     lp2.add_entry(1, 1, 2);
+    return lp2;
   }
 
   // (3) Transportation: supplies 20, 30; demands 10, 25, 15 (balanced);
@@ -107,27 +107,32 @@ main()
   // Cost 9*10 + 12*5 + 13*15 + 6*20 = 465. Optimality: potentials u2 = 0,
   // v = (9, 12, 13), u1 = -6 give reduced costs 5 (x11) and 3 (x13) > 0, so
   // the optimum is unique. (Duals not unique: one equality is redundant.)
-  LinearProgram lp3;
-  lp3.maximize = false;
+  LinearProgram
+  make_lp3()
   {
-    const double supply[2]  = {20, 30};
-    const double demand[3]  = {10, 25, 15};
-    const double cost[2][3] = {{8, 6, 10}, {9, 12, 13}};
-    for (unsigned int i = 0; i < 2; ++i)
-      for (unsigned int j = 0; j < 3; ++j)
-        lp3.add_column(cost[i][j], 0, infinity);
-    for (unsigned int i = 0; i < 2; ++i)
-      {
-        const unsigned int r = lp3.add_row(supply[i], supply[i]);
+    LinearProgram lp3;
+    lp3.maximize = false;
+    {
+      const double supply[2]  = {20, 30};
+      const double demand[3]  = {10, 25, 15};
+      const double cost[2][3] = {{8, 6, 10}, {9, 12, 13}};
+      for (unsigned int i = 0; i < 2; ++i)
         for (unsigned int j = 0; j < 3; ++j)
-          lp3.add_entry(r, 3 * i + j, 1);
-      }
-    for (unsigned int j = 0; j < 3; ++j)
-      {
-        const unsigned int r = lp3.add_row(demand[j], demand[j]);
-        for (unsigned int i = 0; i < 2; ++i)
-          lp3.add_entry(r, 3 * i + j, 1);
-      }
+          lp3.add_column(cost[i][j], 0, infinity);
+      for (unsigned int i = 0; i < 2; ++i)
+        {
+          const unsigned int r = lp3.add_row(supply[i], supply[i]);
+          for (unsigned int j = 0; j < 3; ++j)
+            lp3.add_entry(r, 3 * i + j, 1);
+        }
+      for (unsigned int j = 0; j < 3; ++j)
+        {
+          const unsigned int r = lp3.add_row(demand[j], demand[j]);
+          for (unsigned int i = 0; i < 2; ++i)
+            lp3.add_entry(r, 3 * i + j, 1);
+        }
+    }
+    return lp3;
   }
 
   // (4) Equalities, free variables, a ranged row and a free row:
@@ -139,61 +144,101 @@ main()
   // a = s - U = 4.5, value 6s - 4t - 7U = 13.5. Duals (derivatives of the
   // minimum): y = (6, -4, -7, 0); y3 = -7 <= 0 at an active upper bound of a
   // minimisation, as documented.
-  LinearProgram lp4;
-  lp4.maximize = false;
+  LinearProgram
+  make_lp4()
   {
-    const unsigned int a  = lp4.add_column(2, -infinity, infinity);
-    const unsigned int b  = lp4.add_column(3, -infinity, infinity);
-    const unsigned int c  = lp4.add_column(-1, 0, 4);
-    const unsigned int r1 = lp4.add_row(10, 10);
-    const unsigned int r2 = lp4.add_row(2, 2);
-    const unsigned int r3 = lp4.add_row(-1, 5.5);
-    const unsigned int r4 = lp4.add_row(-infinity, infinity);
-    lp4.add_entry(r1, a, 1);
-    lp4.add_entry(r1, b, 1);
-    lp4.add_entry(r1, c, 1);
-    lp4.add_entry(r2, a, 1);
-    lp4.add_entry(r2, b, -1);
-    lp4.add_entry(r3, b, 1);
-    lp4.add_entry(r3, c, 1);
-    lp4.add_entry(r4, a, 1);
-    lp4.add_entry(r4, c, 1);
+    LinearProgram lp4;
+    lp4.maximize = false;
+    {
+      const unsigned int a  = lp4.add_column(2, -infinity, infinity);
+      const unsigned int b  = lp4.add_column(3, -infinity, infinity);
+      const unsigned int c  = lp4.add_column(-1, 0, 4);
+      const unsigned int r1 = lp4.add_row(10, 10);
+      const unsigned int r2 = lp4.add_row(2, 2);
+      const unsigned int r3 = lp4.add_row(-1, 5.5);
+      const unsigned int r4 = lp4.add_row(-infinity, infinity);
+      lp4.add_entry(r1, a, 1);
+      lp4.add_entry(r1, b, 1);
+      lp4.add_entry(r1, c, 1);
+      lp4.add_entry(r2, a, 1);
+      lp4.add_entry(r2, b, -1);
+      lp4.add_entry(r3, b, 1);
+      lp4.add_entry(r3, c, 1);
+      lp4.add_entry(r4, a, 1);
+      lp4.add_entry(r4, c, 1);
+    }
+    return lp4;
   }
 
   // (5) Unbounded: max x + y  s.t.  x - y <= 1,  x, y >= 0 (ray (1, 1)).
-  LinearProgram unbounded;
-  unbounded.add_column(1, 0, infinity);
-  unbounded.add_column(1, 0, infinity);
-  unbounded.add_row(-infinity, 1);
-  unbounded.add_entry(0, 0, 1);
-  unbounded.add_entry(0, 1, -1);
+  LinearProgram
+  make_unbounded()
+  {
+    LinearProgram unbounded;
+    unbounded.add_column(1, 0, infinity);
+    unbounded.add_column(1, 0, infinity);
+    unbounded.add_row(-infinity, 1);
+    unbounded.add_entry(0, 0, 1);
+    unbounded.add_entry(0, 1, -1);
+    return unbounded;
+  }
 
   // (6) Infeasible: x + y <= 1 and x + y >= 3.
-  LinearProgram infeasible;
-  infeasible.add_column(1, 0, infinity);
-  infeasible.add_column(1, 0, infinity);
-  infeasible.add_row(-infinity, 1);
-  infeasible.add_row(3, infinity);
-  for (unsigned int i = 0; i < 2; ++i)
-    for (unsigned int j = 0; j < 2; ++j)
-      infeasible.add_entry(i, j, 1);
+  LinearProgram
+  make_infeasible()
+  {
+    LinearProgram infeasible;
+    infeasible.add_column(1, 0, infinity);
+    infeasible.add_column(1, 0, infinity);
+    infeasible.add_row(-infinity, 1);
+    infeasible.add_row(3, infinity);
+    for (unsigned int i = 0; i < 2; ++i)
+      for (unsigned int j = 0; j < 2; ++j)
+        infeasible.add_entry(i, j, 1);
+    return infeasible;
+  }
 
   // (7) Infeasible through the column bounds: x + y >= 5, 0 <= x, y <= 2.
-  LinearProgram infeasible_bounds;
-  infeasible_bounds.maximize = false;
-  infeasible_bounds.add_column(1, 0, 2);
-  infeasible_bounds.add_column(1, 0, 2);
-  infeasible_bounds.add_row(5, infinity);
-  infeasible_bounds.add_entry(0, 0, 1);
-  infeasible_bounds.add_entry(0, 1, 1);
+  LinearProgram
+  make_infeasible_bounds()
+  {
+    LinearProgram infeasible_bounds;
+    infeasible_bounds.maximize = false;
+    infeasible_bounds.add_column(1, 0, 2);
+    infeasible_bounds.add_column(1, 0, 2);
+    infeasible_bounds.add_row(5, infinity);
+    infeasible_bounds.add_entry(0, 0, 1);
+    infeasible_bounds.add_entry(0, 1, 1);
+    return infeasible_bounds;
+  }
 
   // (8) Primal and dual infeasible: max x + y, y <= -1 as a row, y >= 0,
   // x free and unconstrained (a ray, but no feasible point): infeasible.
-  LinearProgram both;
-  both.add_column(1, -infinity, infinity);
-  both.add_column(1, 0, infinity);
-  both.add_row(-infinity, -1);
-  both.add_entry(0, 1, 1);
+  LinearProgram
+  make_both()
+  {
+    LinearProgram both;
+    both.add_column(1, -infinity, infinity);
+    both.add_column(1, 0, infinity);
+    both.add_row(-infinity, -1);
+    both.add_entry(0, 1, 1);
+    return both;
+  }
+
+} // namespace
+
+int
+main()
+{
+  const std::vector<Config> configs           = all_configs();
+  const LinearProgram       lp1               = make_lp1();
+  const LinearProgram       lp2               = make_lp2();
+  const LinearProgram       lp3               = make_lp3();
+  const LinearProgram       lp4               = make_lp4();
+  const LinearProgram       unbounded         = make_unbounded();
+  const LinearProgram       infeasible        = make_infeasible();
+  const LinearProgram       infeasible_bounds = make_infeasible_bounds();
+  const LinearProgram       both              = make_both();
 
   for (const Config &config : configs)
     {
