@@ -19,6 +19,7 @@
 #include <map>
 #include <mutex>
 #include <sstream>
+#include <thread>
 
 namespace masonry
 {
@@ -437,18 +438,26 @@ namespace masonry
       const auto   first   = std::chrono::steady_clock::now();
       const double uniform = fitness[0](x0);
       {
-        // what a generation will cost, before the first one (silent) starts
+        // what a generation will cost, before the first one (silent)
+        // starts: every thread evolves an island of the whole population
+        // size, and the threads share the cores
         const double one = std::chrono::duration<double>(
                              std::chrono::steady_clock::now() - first)
                              .count();
-        const double generation = one * optimiser->population_size /
-                                  std::max<std::size_t>(1, analyses.size());
+        const double threads = analyses.size();
+        const double cores =
+          std::max(1u,
+                   std::min(std::thread::hardware_concurrency(),
+                            static_cast<unsigned int>(analyses.size())));
+        const double generation =
+          one * optimiser->population_size * threads / cores;
         if (generation > 10)
           {
             std::ostringstream line;
             line << "Adaptation: one evaluation takes " << std::setprecision(3)
-                 << one << " s; a generation of " << optimiser->population_size
-                 << " evaluations on " << analyses.size() << " thread(s) about "
+                 << one << " s; a generation (" << analyses.size()
+                 << " island(s) of " << optimiser->population_size
+                 << " evaluations, on " << cores << " core(s)) about "
                  << generation << " s\n";
             pcout << line.str();
           }
