@@ -110,30 +110,6 @@ namespace
     double c = 0.1e6, mu = 0.5, H = 1e10;
   };
 
-  /** The entries of the DataSet lines of a PVD file, in order. */
-  std::vector<std::string>
-  pvd_entries(const std::string &file)
-  {
-    std::ifstream            in(file);
-    std::string              line;
-    std::vector<std::string> entries;
-    while (std::getline(in, line))
-      if (line.find("<DataSet") != std::string::npos)
-        entries.push_back(line.substr(line.find("timestep")));
-    return entries;
-  }
-
-  /** Whether every entry of @p all is in @p some. */
-  bool
-  contains(const std::vector<std::string> &some,
-           const std::vector<std::string> &all)
-  {
-    for (const auto &e : all)
-      if (std::find(some.begin(), some.end(), e) == some.end())
-        return false;
-    return !all.empty();
-  }
-
   /** The values of DataArray @p name of an ASCII VTU file. */
   std::vector<double>
   vtu_array(const std::string &file, const std::string &name)

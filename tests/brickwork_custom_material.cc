@@ -97,19 +97,6 @@ namespace
     double kappa_0 = 2e-4;
   };
 
-  /** The entries of the DataSet lines of a PVD file, in order. */
-  std::vector<std::string>
-  pvd_entries(const std::string &file)
-  {
-    std::ifstream            in(file);
-    std::string              line;
-    std::vector<std::string> entries;
-    while (std::getline(in, line))
-      if (line.find("<DataSet") != std::string::npos)
-        entries.push_back(line.substr(line.find("timestep")));
-    return entries;
-  }
-
   /** The times of the steps of an XDMF file, as written. */
   std::vector<std::string>
   xdmf_times(const std::string &file)
@@ -121,17 +108,6 @@ namespace
       if (line.find("<Time Value") != std::string::npos)
         times.push_back(line.substr(line.find("<Time Value")));
     return times;
-  }
-
-  /** Whether every entry of @p all is in @p some. */
-  bool
-  contains(const std::vector<std::string> &some,
-           const std::vector<std::string> &all)
-  {
-    for (const auto &e : all)
-      if (std::find(some.begin(), some.end(), e) == some.end())
-        return false;
-    return !all.empty();
   }
 } // namespace
 

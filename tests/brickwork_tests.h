@@ -11,6 +11,7 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iostream>
@@ -59,6 +60,30 @@ namespace brickwork_tests
         rows.push_back(row);
       }
     return rows;
+  }
+  /** The entries of the DataSet lines of a PVD file, in order. */
+  inline std::vector<std::string>
+  pvd_entries(const std::string &file)
+  {
+    std::ifstream            in(file);
+    std::string              line;
+    std::vector<std::string> entries;
+    while (std::getline(in, line))
+      if (line.find("<DataSet") != std::string::npos)
+        entries.push_back(line.substr(line.find("timestep")));
+    return entries;
+  }
+
+  /** Whether every entry of @p all is in @p some (and @p all is not
+   * empty). */
+  inline bool
+  contains(const std::vector<std::string> &some,
+           const std::vector<std::string> &all)
+  {
+    for (const auto &e : all)
+      if (std::find(some.begin(), some.end(), e) == some.end())
+        return false;
+    return !all.empty();
   }
 } // namespace brickwork_tests
 
