@@ -235,13 +235,8 @@ main(int argc, char **argv)
   const auto stopped = run("resumed", prm_stopped);
   const auto resumed =
     run("resumed", prm(wallette.str() + "set Resume = true\n", law.str()));
-  const auto b    = curve("resumed");
-  double     diff = a.size() == b.size() ? 0 : 1;
-  for (unsigned int i = 0; a.size() == b.size() && i < a.size(); ++i)
-    for (unsigned int j = 0; j < a[i].size(); ++j)
-      diff =
-        std::max(diff,
-                 std::abs(a[i][j] - b[i][j]) / std::max(1., std::abs(a[i][j])));
+  const auto   b    = curve("resumed");
+  const double diff = curve_difference(a, b);
   check(stopped.at("status").as_string() == "interrupted" &&
           resumed.at("status").as_string() == "completed" && diff < 1e-12,
         "checkpointed after 11 steps and resumed: the curve of the "

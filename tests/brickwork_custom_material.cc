@@ -144,13 +144,8 @@ main(int argc, char **argv)
     run("resumed", prm(wallette + "set Maximum steps = 13\n", plugins));
   const auto resumed =
     run("resumed", prm(wallette + "set Resume = true\n", plugins));
-  const auto a = curve("full"), b = curve("resumed");
-  double     diff = a.size() == b.size() ? 0 : 1;
-  for (unsigned int i = 0; a.size() == b.size() && i < a.size(); ++i)
-    for (unsigned int j = 0; j < a[i].size(); ++j)
-      diff =
-        std::max(diff,
-                 std::abs(a[i][j] - b[i][j]) / std::max(1., std::abs(a[i][j])));
+  const auto   a = curve("full"), b = curve("resumed");
+  const double diff = curve_difference(a, b);
   check(stopped.at("status").as_string() == "interrupted" &&
           resumed.at("status").as_string() == "completed" && diff < 1e-12,
         "checkpointed after 13 steps and resumed: the curve of the "

@@ -272,13 +272,8 @@ namespace
           "resume: the first part stops as interrupted");
     const auto resumed =
       run("resumed", prm(short_hex + "set Resume = true\n", material()));
-    const auto a = curve("full"), b = curve("resumed");
-    double     diff = a.size() == b.size() ? 0 : 1;
-    for (unsigned int i = 0; a.size() == b.size() && i < a.size(); ++i)
-      for (unsigned int j = 0; j < a[i].size(); ++j)
-        diff = std::max(diff,
-                        std::abs(a[i][j] - b[i][j]) /
-                          std::max(1., std::abs(a[i][j])));
+    const auto   a = curve("full"), b = curve("resumed");
+    const double diff = curve_difference(a, b);
     check(resumed.at("status").as_string() == "completed" && diff < 1e-12,
           "resume: the resumed run reproduces the uninterrupted curve "
           "(1e-12)");

@@ -85,6 +85,20 @@ namespace brickwork_tests
         return false;
     return !all.empty();
   }
+  /** The largest difference between two curves, relative to max(1, |a|)
+   * entry by entry; 1 when they have different numbers of rows. */
+  inline double
+  curve_difference(const std::vector<std::vector<double>> &a,
+                   const std::vector<std::vector<double>> &b)
+  {
+    double diff = a.size() == b.size() ? 0 : 1;
+    for (unsigned int i = 0; a.size() == b.size() && i < a.size(); ++i)
+      for (unsigned int j = 0; j < a[i].size(); ++j)
+        diff = std::max(diff,
+                        std::abs(a[i][j] - b[i][j]) /
+                          std::max(1., std::abs(a[i][j])));
+    return diff;
+  }
 } // namespace brickwork_tests
 
 #endif
