@@ -191,6 +191,7 @@ def report(out, rows):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+    import matplotlib.ticker
     cases = list(dict.fromkeys(r[0] for r in rows))
     fig, axes = plt.subplots(1, len(cases), figsize=(6.5 * len(cases), 4.6),
                              squeeze=False)
@@ -227,8 +228,10 @@ def report(out, rows):
             if gens:
                 x = [float(r[4]) for r in gens] + [float(end[4])]
                 y = [float(r[8]) for r in gens] + [float(gens[-1][8])]
-                style = "-" if s[1] == "3x4" else "--"
-                ax.step(x, y, style, where="post", lw=1,
+                colour = "C%d" % (OPTIMISERS.index(s[0])
+                                  if s[0] in OPTIMISERS else len(OPTIMISERS))
+                ax.step(x, y, "-" if s[2] == "lines" else ":", where="post",
+                        color=colour, lw=1 if s[1] == "3x4" else 2.5,
                         label=f"{s[0]}, {s[2]}, from {s[1]}")
         if "12x16" in done:
             t12, f12 = done["12x16"][1], done["12x16"][0]
@@ -238,6 +241,8 @@ def report(out, rows):
                         (t12 / 5, f12), textcoords="offset points",
                         xytext=(4, 4), fontsize=7, color="r")
         ax.set_xscale("log")
+        ax.xaxis.set_major_formatter(matplotlib.ticker.ScalarFormatter())
+        ax.xaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
         ax.set_xlabel("CPU time of the run, user + sys [s]")
         ax.set_ylabel("best objective: work of the loads - dissipation [J]")
         ax.set_title(CASES[case][1], fontsize=10)
