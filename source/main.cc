@@ -76,15 +76,13 @@ main(int argc, char **argv)
     }
 
   // A process not started by mpirun is an MPI singleton of one rank: Open
-  // MPI need not start its orted daemon for it (masonry never spawns
-  // processes) nor probe the matching transport layers (with libpsm2
-  // installed and no Omni-Path card, the psm2 layer polls for 0.2 s); only
-  // defaults, a user's own setting of these variables wins.
+  // MPI need not probe its matching transport layers for it (with libpsm2
+  // installed and no Omni-Path card, the psm2 layer polls for 0.2 s). Only
+  // a default: a user's own setting wins. (Not ess_singleton_isolated,
+  // which saves starting orted: isolated singletons share one session
+  // directory, and one that ends removes it under another that starts.)
   if (!under_mpi())
-    {
-      ::setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
-      ::setenv("OMPI_MCA_pml", "ob1", 0);
-    }
+    ::setenv("OMPI_MCA_pml", "ob1", 0);
 
   // next to the executable (build tree), in ../lib (installed), or where
   // the dynamic loader finds it; RTLD_GLOBAL for Open MPI's components.
