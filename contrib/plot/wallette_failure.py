@@ -58,6 +58,9 @@ def main(d):
     xs = [p[0] for c in cells for p in c["x0"]]
     x_cut = min(xs) + 0.45 * (max(xs) - min(xs))
 
+    # text scaled with the picture (the layout is made for 1600 pixels)
+    plt.rcParams["font.size"] = 10 * max(0.55, min(1.0, w / 1600))
+    fs = plt.rcParams["font.size"]
     fig = plt.figure(figsize=(w / 100, h / 100), dpi=100)
     axf = fig.add_axes([0.05, 0.1, 0.52, 0.78])
     axs = fig.add_axes([0.62, 0.1, 0.26, 0.78])
@@ -90,7 +93,7 @@ def main(d):
         if segs:
             axf.add_collection(LineCollection(segs, colors=colour,
                                               linewidths=1.6))
-    axf.set_title("front face (x-z)", fontsize=10)
+    axf.set_title("front face (x-z)", fontsize=fs)
 
     # section at x_cut
     def cut_cell(c):
@@ -141,7 +144,7 @@ def main(d):
         if segs:
             axs.add_collection(LineCollection(segs, colors=colour,
                                               linewidths=1.6))
-    axs.set_title(f"section at x = {1e3 * x_cut:.0f} mm (y-z)", fontsize=10)
+    axs.set_title(f"section at x = {1e3 * x_cut:.0f} mm (y-z)", fontsize=fs)
 
     for ax, (i, j) in ((axf, (0, 2)), (axs, (1, 2))):
         pts = [(p[i], p[j]) for c in cells for p in c["x"]] or [(0, 0)]
@@ -153,14 +156,14 @@ def main(d):
         ax.set_aspect("equal", adjustable="box")
         ax.set_xlabel("xyz"[i] + " (mm)")
         ax.set_ylabel("z (mm)")
-        ax.tick_params(labelsize=8)
+        ax.tick_params(labelsize=0.8 * fs)
     handles = [plt.Line2D([], [], color=colour, lw=2,
                           label=f"open {name} ({drawn[t]})")
                for t, (name, colour) in TYPES.items()]
     if gone:
         handles.append(plt.Line2D([], [], color="k", marker="x", ls="",
                                   label=f"deleted cell ({len(gone)})"))
-    axf.legend(handles=handles, fontsize=7, loc="upper right",
+    axf.legend(handles=handles, fontsize=0.7 * fs, loc="upper right",
                framealpha=0.8)
     fig.colorbar(cm.ScalarMappable(norm=norm, cmap=cmap), cax=axc,
                  label=f"damage ({data['damage']})")
@@ -168,7 +171,7 @@ def main(d):
         f"strain {data['strain']:.5f}, stress {data['stress'] / 1e6:.2f} MPa;"
         f" displacements x {f:.3g}; open joints: normal opening > "
         f"{1e3 * data['opening_threshold']:.3g} mm "
-        f"({len(joints)} faces)", fontsize=10)
+        f"({len(joints)} faces)", fontsize=fs)
     fig.savefig(os.path.join(d, "failure.png"), dpi=100)
 
 
