@@ -168,7 +168,8 @@ def main(d):
     fig.colorbar(cm.ScalarMappable(norm=norm, cmap=cmap), cax=axc,
                  label=f"damage ({data['damage']})")
     fig.suptitle(
-        f"strain {data['strain']:.5f}, stress {data['stress'] / 1e6:.2f} MPa;"
+        f"strain {data['strain']:.5f}, stress "
+        f"{round(data['stress'] / 1e6, 2) + 0.0:.2f} MPa;"
         f" displacements x {f:.3g}; open joints: normal opening > "
         f"{1e3 * data['opening_threshold']:.3g} mm "
         f"({len(joints)} faces)", fontsize=fs)

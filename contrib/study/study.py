@@ -175,6 +175,7 @@ def make_sweep_prm(f_b, f_m, directory, quick, model):
     # a mortar strength entry, wherever the model has one
     found = False
     for path in (["Interface law", "Composite"], ["Mortar material"],
+                 ["Mortar material", "Mortar"],
                  ["Mortar material", "Damage plasticity"], ["Wallette"]):
         for key in ("Mortar compressive strength", "Compressive strength"):
             if key == "Compressive strength" and "Mortar" not in path[0]:
@@ -182,7 +183,7 @@ def make_sweep_prm(f_b, f_m, directory, quick, model):
             text, hit = set_in(text, path, key, f"{x['f_m']:.6g}", add=False)
             found = found or hit
     if found:
-        used.append("f_m")
+        used.append("f_m (mortar strength entry)")
     header = (f"# Study sweep pair {name}: {os.path.relpath(source, root)}, "
               f"monotonic, f_b = {f_b:g} MPa, f_m = {f_m:g} MPa, "
               f"E_b = {x['E_b']:.4g} Pa, f_bt = {x['f_bt']:.4g} Pa, "
