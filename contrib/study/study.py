@@ -37,14 +37,23 @@ QUICK_LENGTH = {"single": "2", "double": "4", "triple": "4"}
 # the sweep of issue 16: unit strength f_b x mortar strength f_m, MPa
 SWEEP_FB = (10.0, 20.0, 40.0)
 SWEEP_FM = (2.0, 5.0, 12.0)
-# the sweep runs monotonic to this strain (the single-leaf peak is at about
-# 0.0033), nominal step 1e-4 (--quick: 2e-4 on the coarsest mesh)
-SWEEP = {"Protocol": "monotonic", "Target strain": "0.006",
-         "Number of steps": "60", "Write VTU": "false"}
-SWEEP_QUICK = dict(SWEEP, **{"Number of steps": "30",
-                             "Elements along the length": "2",
+# the sweep runs monotonic past the peak (sweep_target()), nominal step
+# 1e-4 (--quick: 2e-4 on the coarsest mesh)
+SWEEP = {"Protocol": "monotonic", "Write VTU": "false"}
+SWEEP_STEP = 1e-4
+SWEEP_QUICK = dict(SWEEP, **{"Elements along the length": "2",
                              "Elements along the width": "1",
                              "Elements along the height": "1"})
+SWEEP_QUICK_STEP = 2e-4
+
+
+def sweep_target(f_b, E_m, h_b, h_m):
+    """Target strain of a sweep pair: 1.5 times the unit's strain at peak
+    (0.004, the examples') plus the strain of the mortar joints at f_b
+    (f_b h_m / ((h_b + h_m) E_m)), in [0.006, 0.03]: a soft mortar moves
+    the peak far out (f_m = 2 MPa: E_m = 0.4 GPa)."""
+    joint = f_b * h_m / ((h_b + h_m) * E_m)
+    return min(0.03, max(0.006, 1.5 * (0.004 + joint)))
 # the specimens' failure.png: small enough to keep with the results
 FAILURE_PLOT = {"Width": "1200", "Height": "600"}
 # --model: the entry of subsection Wallette that selects the model
@@ -141,18 +150,24 @@ def make_sweep_prm(f_b, f_m, directory, quick, model):
     name = f"sweep-fb{f_b:g}-fm{f_m:g}"
     out = os.path.join(directory, name)
     text = set_entry(text, "Output directory", out, "top")
-    for key, value in (SWEEP_QUICK if quick else SWEEP).items():
+    x = sweep_inputs(f_b, f_m)
+    h_b = float(get_in(text, ["Wallette"], "Brick height") or 0.065)
+    h_m = float(get_in(text, ["Wallette"], "Joint thickness") or 0.01)
+    target = sweep_target(x["f_b"], x["E_m"], h_b, h_m)
+    step = SWEEP_QUICK_STEP if quick else SWEEP_STEP
+    settings = dict(SWEEP_QUICK if quick else SWEEP,
+                    **{"Target strain": f"{target:.4g}",
+                       "Number of steps": str(math.ceil(target / step))})
+    for key, value in settings.items():
         text, _ = set_in(text, ["Wallette"], key, value)
     if model != "simplified":
         text, _ = set_in(text, ["Wallette"], MODEL_ENTRY, model)
-    x = sweep_inputs(f_b, f_m)
     brick = ["Brick material", "Damage plasticity"]
     for key, value in (("Compressive strength", x["f_b"]),
                        ("Tensile strength", x["f_bt"]),
                        ("Young's modulus", x["E_b"]),
                        ("Poisson's ratio", x["nu_b"])):
         text, _ = set_in(text, brick, key, f"{value:.6g}")
-    h_m = float(get_in(text, ["Wallette"], "Joint thickness") or 0.01)
     law = (get_in(text, ["Interface law"], "Law") or "bilinear").strip()
     used = ["E_b", "f_b", "f_bt"]
     if law == "composite":
@@ -185,7 +200,7 @@ def make_sweep_prm(f_b, f_m, directory, quick, model):
     if found:
         used.append("f_m (mortar strength entry)")
     header = (f"# Study sweep pair {name}: {os.path.relpath(source, root)}, "
-              f"monotonic, f_b = {f_b:g} MPa, f_m = {f_m:g} MPa, "
+              f"monotonic to strain {target:.4g}, f_b = {f_b:g} MPa, f_m = {f_m:g} MPa, "
               f"E_b = {x['E_b']:.4g} Pa, f_bt = {x['f_bt']:.4g} Pa, "
               f"E_m = {x['E_m']:.4g} Pa (200 f_m), model {model}"
               f"{' (--quick)' if quick else ''}, written by contrib/study/run."
