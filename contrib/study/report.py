@@ -679,8 +679,8 @@ def main(argv):
     text = [f"# Wallette study{' (--quick smoke run)' if quick else ''}",
             "",
             f"Written by contrib/study/report.py on "
-            f"{time.strftime('%Y-%m-%d %H:%M')} from the runs in "
-            f"{directory}; model: {', '.join(models) or 'simplified'}. "
+            f"{time.strftime('%Y-%m-%d %H:%M')} from the runs in the "
+            f"study directory `{os.path.basename(directory)}'; model: {', '.join(models) or 'simplified'}. "
             "Stress = platen force / gross area, strain = "
             "platen displacement / height; E_0 = initial modulus (secant of "
             "the first step); E_u/E_0 = unloading modulus (secant from the "
@@ -695,7 +695,11 @@ def main(argv):
         text += ["## The specimens", "", table, "", codes_table(data, rows),
                  "", *fit_lines, "",
                  "Plots: study_curves.png, study_degradation.png, "
-                 "study_envelope.png.", ""]
+                 "study_envelope.png"
+                 + ("; the failed wallette of each specimen: "
+                    "NAME/failure.png" if any(os.path.exists(os.path.join(
+                        directory, s["name"], "failure.png")) for s in data)
+                    else "") + ".", ""]
     if sweep:
         text += sweep_section(directory, sweep)
         text += ["", "Plots: sweep_strength.png, sweep_modulus.png.", ""]
@@ -709,7 +713,8 @@ def main(argv):
         text.append("")
         for name, status, summary, log in bad:
             msg = summary.get("message") or summary.get("error") or ""
-            text.append(f"- {name}: status {status} {msg} (log: {log})")
+            text.append(f"- {name}: status {status} {msg} (log: "
+                        f"{os.path.basename(log)})")
         text.append("")
     with open(os.path.join(directory, "study.md"), "w") as f:
         f.write("\n".join(text))
