@@ -401,17 +401,18 @@ namespace masonry
         {
           analyses[t]->quiet = true;
           fitness.emplace_back([&, t](const std::vector<double> &genes) {
-            {
-              std::lock_guard<std::mutex> lock(evaluated_mutex);
-              const auto                  known = evaluated.find(genes);
-              if (known != evaluated.end())
-                {
-                  ++n_repeated;
-                  if (known->second.second)
-                    ++failed[t];
-                  return known->second.first;
-                }
-            }
+            if (reuse_evaluations())
+              {
+                std::lock_guard<std::mutex> lock(evaluated_mutex);
+                const auto                  known = evaluated.find(genes);
+                if (known != evaluated.end())
+                  {
+                    ++n_repeated;
+                    if (known->second.second)
+                      ++failed[t];
+                    return known->second.first;
+                  }
+              }
             RigidBlockAnalysis &a = *analyses[t];
             double              f = -std::numeric_limits<double>::infinity();
             bool                failure = true;
@@ -527,12 +528,41 @@ namespace masonry
     void
     RigidBlockAnalysis::build_model()
     {
-      const auto start   = std::chrono::steady_clock::now();
-      model              = mesh_vertices.empty() ?
-                             std::make_unique<rigid_blocks::BlockModel>(*geometry, options) :
-                             std::make_unique<rigid_blocks::BlockModel>(*geometry,
+      const auto start = std::chrono::steady_clock::now();
+      model            = mesh_vertices.empty() ?
+                           std::make_unique<rigid_blocks::BlockModel>(*geometry, options) :
+                           std::make_unique<rigid_blocks::BlockModel>(*geometry,
                                                            options,
                                                            mesh_vertices);
+      model_vertices   = mesh_vertices;
+      compute_dead_loads();
+      seconds_geometry +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+          .count();
+    }
+
+    void
+    RigidBlockAnalysis::update_thickness()
+    {
+      if (!model || model_vertices != mesh_vertices)
+        return build_model();
+      const auto start = std::chrono::steady_clock::now();
+      model->update_thickness();
+      compute_dead_loads();
+      seconds_geometry +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+          .count();
+    }
+
+    bool
+    RigidBlockAnalysis::reuse_evaluations() const
+    {
+      return !optimiser || optimiser->reuse_evaluations;
+    }
+
+    void
+    RigidBlockAnalysis::compute_dead_loads()
+    {
       const auto &blocks = model->blocks();
       dead_force.assign(blocks.size(), dealii::Tensor<1, 3>());
       dead_moment.assign(blocks.size(), dealii::Tensor<1, 3>());
@@ -542,9 +572,6 @@ namespace masonry
                                            dead_moment);
       for (unsigned int b = 0; b < blocks.size(); ++b)
         dead_force[b][2] -= blocks[b].weight;
-      seconds_geometry +=
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
-          .count();
     }
 
     double
