@@ -20,9 +20,22 @@
 #include <mutex>
 #include <sstream>
 #include <thread>
+#include <time.h>
 
 namespace masonry
 {
+  namespace
+  {
+    /** CPU time of the calling thread, s. */
+    double
+    thread_cpu_seconds()
+    {
+      timespec t;
+      clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+      return t.tv_sec + 1e-9 * t.tv_nsec;
+    }
+  } // namespace
+
   namespace analysis
   {
     std::set<std::string>
@@ -484,6 +497,7 @@ namespace masonry
         n_failed += f;
       mesh_vertices    = vertices_from_genes(result.best_genes);
       seconds_geometry = seconds_assembly = seconds_solve = 0;
+      cpu_seconds_solve                                   = 0;
       // the other threads' copies are not needed for the final analysis
       const unsigned int n_threads = analyses.size();
       workers.clear();
@@ -603,12 +617,14 @@ namespace masonry
                << " M non-zeros: this may take minutes\n";
           context.pcout << line.str();
         }
-      const auto         start = std::chrono::steady_clock::now();
+      const auto         start     = std::chrono::steady_clock::now();
+      const double       cpu_start = thread_cpu_seconds();
       const lp::Solution solution =
         warm ? solver->solve_warm(lp, *warm) : solver->solve(lp);
       seconds_solve +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
           .count();
+      cpu_seconds_solve += thread_cpu_seconds() - cpu_start;
       ++n_solves;
       n_iterations += solution.iterations;
       AssertThrow(solution.status != lp::Status::failed,
@@ -639,20 +655,21 @@ namespace masonry
                                const lp::Solution      &solution,
                                RunContext              &context) const
     {
-      Json &summary               = context.summary;
-      summary["n_blocks"]         = model->blocks().size();
-      summary["n_interfaces"]     = model->interfaces().size();
-      summary["n_contact_points"] = model->n_contact_points();
-      summary["interface_model"]  = joints_name;
-      summary["lp_rows"]          = lp.n_rows();
-      summary["lp_columns"]       = lp.n_columns();
-      summary["lp_nonzeros"]      = lp.n_nonzeros();
-      summary["lp_solver"]        = solver_name;
-      summary["lp_solves"]        = n_solves;
-      summary["lp_iterations"]    = n_iterations;
-      summary["seconds_geometry"] = seconds_geometry;
-      summary["seconds_assembly"] = seconds_assembly;
-      summary["seconds_solve"]    = seconds_solve;
+      Json &summary                = context.summary;
+      summary["n_blocks"]          = model->blocks().size();
+      summary["n_interfaces"]      = model->interfaces().size();
+      summary["n_contact_points"]  = model->n_contact_points();
+      summary["interface_model"]   = joints_name;
+      summary["lp_rows"]           = lp.n_rows();
+      summary["lp_columns"]        = lp.n_columns();
+      summary["lp_nonzeros"]       = lp.n_nonzeros();
+      summary["lp_solver"]         = solver_name;
+      summary["lp_solves"]         = n_solves;
+      summary["lp_iterations"]     = n_iterations;
+      summary["seconds_geometry"]  = seconds_geometry;
+      summary["seconds_assembly"]  = seconds_assembly;
+      summary["seconds_solve"]     = seconds_solve;
+      summary["cpu_seconds_solve"] = cpu_seconds_solve;
       if (solution.status == lp::Status::optimal)
         summary["lp_max_violation"] = check_solution(lp, solution, context);
     }

@@ -284,6 +284,9 @@ namespace masonry
       std::vector<dealii::Tensor<1, 3>> dead_force, dead_moment;
       /** Seconds spent in build_model(), assembly and solve(). */
       double seconds_geometry = 0, seconds_assembly = 0, seconds_solve = 0;
+      /** CPU seconds of the solving thread in solve() (unlike seconds_solve,
+       * not inflated by other processes on a shared machine). */
+      double cpu_seconds_solve = 0;
       /** Number of LP solves and their iterations. */
       unsigned int n_solves = 0, n_iterations = 0;
     };
