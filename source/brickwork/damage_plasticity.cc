@@ -28,6 +28,24 @@
  * - optional viscous regularisation of both damages.
  * The tangent is the central-difference derivative of this stress update
  * (consistent with it to O(h^2)); cells that stay elastic use C0.
+ *
+ * Options (off by default, so the law above is unchanged):
+ * - `Tension-compression interaction': the nominal utilisations u_c =
+ *   (1 - d_c) tau_c / f_c, u_t = (1 - d_t) tau_t / f_t and m = min(u_c,
+ *   u_t, 1/2); both measures are divided by 1 - m. Where compression
+ *   dominates (u_c >= u_t) the compressive criterion is tau_c / T_c + u_t
+ *   <= 1, Lee & Fenves' beta <s_max> term with beta = T_c / f_t, and the
+ *   tensile one u_t <= 1/2 is not reached first; where tension dominates,
+ *   symmetrically. A unit fails on t / f_t + s / f_c = 1 in the mode that
+ *   dominates, pure tension never touches the compressive state and pure
+ *   compression never the tensile one. The return scales s- (or s+) by the
+ *   k that brings the non-homogeneous measure k tau / (1 - min(k a, M))
+ *   onto the envelope's threshold (scale_onto());
+ * - `Confinement coefficient' k: Lubliner's gamma <-s_max> term, gamma =
+ *   k (1 - alpha) - (1 + 2 alpha), when all principal stresses are
+ *   compressive, so that |sigma_1| = f_c + k p under (-sigma_1, -p, -p);
+ * - `Compressive softening' = false: the envelope stays at f_c after its
+ *   peak (plugin `mortar', which only changes the defaults).
  */
 #include <masonry/brickwork/brick_material.h>
 #include <masonry/core/parameters.h>
@@ -103,6 +121,16 @@ namespace masonry
       }
     } // namespace
 
+    /**
+     * Defaults of the entries that differ between the two plugins of this
+     * file (`damage plasticity` for units, `mortar` for a meshed mortar
+     * layer).
+     */
+    struct DamagePlasticityDefaults
+    {
+      const char *E, *nu, *f_c, *eps_c, *f_t, *G_f, *softening, *what;
+    };
+
     /** See the file documentation. */
     class DamagePlasticityBrick : public BrickMaterial
     {
@@ -110,18 +138,35 @@ namespace masonry
       static void
       declare_parameters(dealii::ParameterHandler &prm)
       {
+        declare(prm,
+                {"10e9",
+                 "0.15",
+                 "20e6",
+                 "0.004",
+                 "2e6",
+                 "80",
+                 "true",
+                 "enlarged bricks"});
+      }
+
+      /** The entries, with the plugin's @p defaults. */
+      static void
+      declare(dealii::ParameterHandler       &prm,
+              const DamagePlasticityDefaults &defaults)
+      {
+        using dealii::Patterns::Bool;
         using dealii::Patterns::Double;
         prm.declare_entry("Young's modulus",
-                          "10e9",
+                          defaults.E,
                           Double(0),
-                          "Initial Young's modulus E0 of the enlarged "
-                          "bricks, Pa (> 0).");
+                          std::string("Initial Young's modulus E0 of the ") +
+                            defaults.what + ", Pa (> 0).");
         prm.declare_entry("Poisson's ratio",
-                          "0.15",
+                          defaults.nu,
                           Double(-1, 0.5),
                           "Poisson's ratio (dimensionless, -1 < nu < 0.5).");
         prm.declare_entry("Compressive strength",
-                          "20e6",
+                          defaults.f_c,
                           Double(0),
                           "Uniaxial compressive strength f_c, Pa (> 0): the "
                           "peak of the compressive envelope.");
@@ -133,7 +178,7 @@ namespace masonry
           "envelope over f_c (dimensionless, 0 < ratio < 1).");
         prm.declare_entry(
           "Strain at peak",
-          "0.004",
+          defaults.eps_c,
           Double(0),
           "Total strain eps_c at the compressive peak (dimensionless, at "
           "least f_c / E0). Between the elastic limit e0 = ratio f_c / E0 "
@@ -158,13 +203,13 @@ namespace masonry
           "e_p = b_c (e - sigma / E0); the rest is damage, d_c = 1 - sigma "
           "/ (E0 (e - e_p)), so unloading follows (1 - d_c) E0 to e_p.");
         prm.declare_entry("Tensile strength",
-                          "2e6",
+                          defaults.f_t,
                           Double(0),
                           "Uniaxial tensile strength f_t, Pa (> 0); linear "
                           "up to it.");
         prm.declare_entry(
           "Tensile fracture energy",
-          "80",
+          defaults.G_f,
           Double(0),
           "Fracture energy G_f, J/m^2 (> 0): after the peak sigma = f_t "
           "exp(-(e - f_t / E0) / w_t), w_t = G_f / (f_t l) - f_t / (2 "
@@ -198,6 +243,41 @@ namespace masonry
           "Viscous regularisation of both damages, s (>= 0; 0: none): d_v = "
           "(d + (mu / dt) d_v,old) / (1 + mu / dt) with dt the pseudo-time "
           "of the step (platen displacement increment / `Platen speed').");
+        prm.declare_entry(
+          "Compressive softening",
+          defaults.softening,
+          Bool(),
+          "Whether the compressive envelope softens after its peak (true: "
+          "sigma = f_c exp(-(e - eps_c) / w_c), see `Compressive fracture "
+          "energy'; false: sigma = f_c beyond eps_c, perfectly plastic in "
+          "compression: the material flows at its (confined) strength, the "
+          "inelastic strain still split by `Plastic strain ratio').");
+        prm.declare_entry(
+          "Confinement coefficient",
+          "0",
+          Double(0),
+          "k in |sigma_1| = f_c + k p, the rise of the compressive strength "
+          "with an equal lateral pressure p (triaxial compression, "
+          "dimensionless). 0: the value of the cone alone, k0 = (1 + 2 "
+          "alpha) / (1 - alpha) (1.414 for rho = 1.16); a value k >= k0 adds "
+          "Lubliner's term -gamma <-s_max> of the largest principal effective "
+          "stress when all three are compressive, gamma = k (1 - alpha) - (1 "
+          "+ 2 alpha). Richart et al. (1928) measured k of about 4.1 for "
+          "concrete (recalled, not checked against the paper).");
+        prm.declare_entry(
+          "Tension-compression interaction",
+          "false",
+          Bool(),
+          "Whether tension lowers the compressive strength and compression "
+          "the tensile strength (true: failure on the linear envelope "
+          "sigma_t / f_t + sigma_c / f_c = 1 under compression with lateral "
+          "tension, the Lee-Fenves beta <s_max> term written per mode: with "
+          "the utilisations u_c = (1 - d_c) tau_c / f_c and u_t = (1 - d_t) "
+          "s_max / f_t and m = min(u_c, u_t, 1/2), both measures are divided "
+          "by 1 - m, so a point where compression dominates fails in "
+          "compression and one where tension dominates cracks, and pure "
+          "tension or compression is unchanged; false: independent "
+          "criteria, a square envelope).");
       }
 
       void
@@ -216,6 +296,9 @@ namespace masonry
         rho           = prm.get_double("Biaxial to uniaxial strength ratio");
         d_max         = prm.get_double("Maximum damage");
         mu_visc       = prm.get_double("Viscosity");
+        softening     = prm.get_bool("Compressive softening");
+        interaction   = prm.get_bool("Tension-compression interaction");
+        k_confinement = prm.get_double("Confinement coefficient");
         auto positive = [](const double v, const char *entry) {
           AssertThrow(v > 0, ExcParameter(entry, "must be positive"));
         };
@@ -244,7 +327,20 @@ namespace masonry
              "the peak with a slope below E0)";
         AssertThrow(eps_c >= f_c / E * (1 + 1e-12),
                     ExcParameter("Strain at peak", m.str()));
-        alpha  = (rho - 1) / (2 * rho - 1);
+        alpha           = (rho - 1) / (2 * rho - 1);
+        const double k0 = (1 + 2 * alpha) / (1 - alpha);
+        {
+          std::ostringstream m;
+          m << "must be 0 or at least (1 + 2 alpha) / (1 - alpha) = " << k0
+            << ", the value of the compressive cone with `Biaxial to "
+               "uniaxial strength ratio' = "
+            << rho;
+          AssertThrow(k_confinement == 0 || k_confinement >= k0 * (1 - 1e-12),
+                      ExcParameter("Confinement coefficient", m.str()));
+        }
+        gamma  = k_confinement == 0 ?
+                   0. :
+                   std::max(0., k_confinement * (1 - alpha) - (1 + 2 * alpha));
         lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
         mu     = E / (2 * (1 + nu));
         C0     = elastic_stiffness();
@@ -336,11 +432,12 @@ namespace masonry
                  "Pa",
                  "`Elastic limit ratio' x `Compressive strength'"},
                 {"confinement_coefficient",
-                 (1 + 2 * alpha) / (1 - alpha),
+                 (1 + 2 * alpha + gamma) / (1 - alpha),
                  "-",
-                 "k = (1 + 2 alpha) / (1 - alpha): the rise of the "
+                 "k = (1 + 2 alpha + gamma) / (1 - alpha): the rise of the "
                  "compressive measure's strength per unit of equal lateral "
-                 "pressure, |sigma_1| = f_c + k p"}};
+                 "pressure, |sigma_1| = f_c + k p (gamma = 0 unless "
+                 "`Confinement coefficient' is set)"}};
       }
 
       double
@@ -440,7 +537,9 @@ namespace masonry
         SymmetricTensor<2, 3>       plus, minus;
         split(s, plus, minus, tau_t, tau_c);
         const double phi = point.strength_factor;
-        return tau_c <= phi * ratio * f_c && tau_t <= phi * f_t;
+        const double m   = interaction_share(tau_c, tau_t, 0, 0, phi);
+        return tau_c <= phi * ratio * f_c * (1 - m) &&
+               tau_t <= phi * f_t * (1 - m);
       }
 
       void
@@ -597,7 +696,50 @@ namespace masonry
         const double I1 = dealii::trace(minus);
         const double J2 =
           0.5 * dealii::deviator(minus).norm() * dealii::deviator(minus).norm();
-        tau_c = std::max(0., (std::sqrt(3 * J2) + alpha * I1) / (1 - alpha));
+        // Lubliner's -gamma <-s_max>: the largest principal value of s- is
+        // negative only when all three principal stresses are compressive
+        const double s_max = gamma > 0 ? dealii::eigenvalues(minus)[0] : 0.;
+        tau_c              = std::max(0.,
+                         (std::sqrt(3 * J2) + alpha * I1 +
+                          gamma * std::min(s_max, 0.)) /
+                           (1 - alpha));
+      }
+
+      /**
+       * The share m = min(u_c, u_t, 1/2) of the tension-compression
+       * interaction: u_c = (1 - @p d_c) @p tau_c / f_c and u_t = (1 - @p d_t)
+       * @p tau_t / f_t are the nominal utilisations of the two strengths
+       * (scaled by the point's strength factor @p phi); both equivalent
+       * stresses are divided by 1 - m. 0 when the interaction is off.
+       */
+      double
+      interaction_share(const double tau_c,
+                        const double tau_t,
+                        const double d_c,
+                        const double d_t,
+                        const double phi) const
+      {
+        if (!interaction)
+          return 0.;
+        return std::min({(1 - d_c) * tau_c / (phi * f_c),
+                         (1 - d_t) * tau_t / (phi * f_t),
+                         0.5});
+      }
+
+      /**
+       * The factor k in (0, 1] that scales the part @p tau (its measure) of
+       * the effective stress onto the threshold @p T when the measure is
+       * g(k) = k tau / (1 - min(k a, M)): a is the utilisation of this
+       * mode per unit of k, M = min(other utilisation, 1/2). g is continuous
+       * and increasing; on the branch k a >= M, k = T (1 - M) / tau, else
+       * k tau = T (1 - k a).
+       */
+      static double
+      scale_onto(const double tau, const double a, const double M, double T)
+      {
+        const double k_high = T * (1 - M) / tau;
+        const double k      = k_high * a >= M ? k_high : T / (tau + T * a);
+        return std::clamp(k, 0., 1.);
       }
 
       /** The compressive envelope at total strain @p e. */
@@ -619,7 +761,7 @@ namespace masonry
             p.stress = f0 + (fc - f0) * (k * x - x * x) / (1 + (k - 2) * x);
           }
         else
-          p.stress = fc * std::exp(-(e - ec) * fc * l / G_c);
+          p.stress = softening ? fc * std::exp(-(e - ec) * fc * l / G_c) : fc;
         decompose(e, b_c, p);
         return p;
       }
@@ -675,32 +817,51 @@ namespace masonry
           old.kappa_c > 0 ? compression(old.kappa_c, l, phi).damage : 0.;
         // compression: the envelope strain this trial state corresponds to
         {
+          const double m   = interaction_share(tau_c, tau_t, d_c, d_t, phi);
+          const double tau = tau_c / (1 - m);
           const double p_old =
             old.kappa_c > 0 ? compression(old.kappa_c, l, phi).plastic : 0.;
-          const double e = p_old + tau_c / E;
+          const double e = p_old + tau / E;
           if (e > old.kappa_c && e > ratio * phi * f_c / E && tau_c > 0)
             {
               const EnvelopePoint env = compression(e, l, phi);
-              const double        s   = E * (e - env.plastic) / tau_c;
+              const double        T   = E * (e - env.plastic);
+              const double        s =
+                interaction ?
+                         scale_onto(tau_c,
+                             (1 - env.damage) * tau_c / (phi * f_c),
+                             std::min((1 - d_t) * tau_t / (phi * f_t), 0.5),
+                             T) :
+                         T / tau_c;
               updated.plastic_strain += (1 - s) * compliance(minus);
               minus *= s;
+              tau_c *= s;
               updated.kappa_c     = e;
-              updated.threshold_c = E * (e - env.plastic);
+              updated.threshold_c = T;
               d_c                 = env.damage;
             }
         }
         {
+          const double m   = interaction_share(tau_c, tau_t, d_c, d_t, phi);
+          const double tau = tau_t / (1 - m);
           const double p_old =
             old.kappa_t > 0 ? tension(old.kappa_t, l, phi).plastic : 0.;
-          const double e = p_old + tau_t / E;
+          const double e = p_old + tau / E;
           if (e > old.kappa_t && e > phi * f_t / E && tau_t > 0)
             {
               const EnvelopePoint env = tension(e, l, phi);
-              const double        s   = E * (e - env.plastic) / tau_t;
+              const double        T   = E * (e - env.plastic);
+              const double        s =
+                interaction ?
+                         scale_onto(tau_t,
+                             (1 - env.damage) * tau_t / (phi * f_t),
+                             std::min((1 - d_c) * tau_c / (phi * f_c), 0.5),
+                             T) :
+                         T / tau_t;
               updated.plastic_strain += (1 - s) * compliance(plus);
               plus *= s;
               updated.kappa_t     = e;
-              updated.threshold_t = E * (e - env.plastic);
+              updated.threshold_t = T;
               d_t                 = env.damage;
             }
         }
@@ -742,11 +903,43 @@ namespace masonry
       double G_c = 20000, b_c = 0.7, f_t = 2e6, G_f = 80, b_t = 0;
       double rho = 1.16, d_max = 0.99, mu_visc = 0;
       double alpha = 0, lambda = 0, mu = 0;
+      /** `Compressive softening', `Tension-compression interaction'. */
+      bool softening = true, interaction = false;
+      /** `Confinement coefficient' and Lubliner's gamma from it. */
+      double k_confinement = 0, gamma = 0;
       /** The initial stiffness. */
       SymmetricTensor<4, 3> C0;
     };
+
+    /**
+     * The same law with the defaults of a bed-joint mortar and compressive
+     * softening off: the `mortar` plugin for a mortar layer meshed with
+     * hexahedra, which under the units is in triaxial compression and must
+     * flow at its confined strength f_m + k p instead of softening at f_m.
+     */
+    class MortarMaterial : public DamagePlasticityBrick
+    {
+    public:
+      static void
+      declare_parameters(dealii::ParameterHandler &prm)
+      {
+        declare(
+          prm, {"1e9", "0.2", "5e6", "0.01", "0.5e6", "10", "false", "mortar"});
+      }
+    };
   } // namespace brickwork
 } // namespace masonry
+
+MASONRY_REGISTER_BRICK_MATERIAL(
+  masonry::brickwork::MortarMaterial,
+  "mortar",
+  "The law of `damage plasticity' for a mortar layer meshed with "
+  "hexahedra, with a mortar's defaults (E0 = 1 GPa, nu = 0.2, f_c = f_m = 5 "
+  "MPa, eps_c = 0.01, f_t = 0.5 MPa, G_f = 10 J/m^2; assumed typical "
+  "values, not from a source) and `Compressive softening' = false: under "
+  "the units the layer is in triaxial compression and flows at its "
+  "confined strength |sigma_1| = f_m + k p (`Confinement coefficient' k) "
+  "without softening.")
 
 MASONRY_REGISTER_BRICK_MATERIAL(
   masonry::brickwork::DamagePlasticityBrick,
@@ -768,4 +961,8 @@ MASONRY_REGISTER_BRICK_MATERIAL(
   "principal stress is blended smoothly (C1) over its first 0.1 % of f_t "
   "so that Newton converges where a principal stress is zero. Tangent: "
   "central differences of the stress update (consistent to O(h^2)); "
-  "elastic points use C0.")
+  "elastic points use C0. Options: `Tension-compression interaction' "
+  "(failure on the linear envelope sigma_t / f_t + sigma_c / f_c = 1 under "
+  "compression with lateral tension), `Confinement coefficient' (Lubliner's "
+  "triaxial term), `Compressive softening' = false (perfectly plastic in "
+  "compression).")

@@ -1,7 +1,8 @@
 /**
  * @file
  * Constitutive laws of the enlarged bricks (`subsection Brick material`,
- * `set Model = ...`): `elastic` and `damage plasticity`.
+ * `set Model = ...`): `elastic`, `damage plasticity` and `mortar` (the
+ * same law with a mortar's defaults, for a meshed mortar layer).
  */
 #ifndef masonry_brickwork_brick_material_h
 #define masonry_brickwork_brick_material_h

@@ -1,0 +1,314 @@
+/**
+ * The brick laws `damage plasticity' (units) and `mortar' at one material
+ * point under mixed control (the vertical strain e_yy prescribed, the two
+ * lateral stresses held at their targets by Newton on e_xx, e_zz with the
+ * law's own tangent), against closed forms:
+ *
+ * (a) unit, `Tension-compression interaction = true': under proportional
+ *     loading sigma_y = -s, sigma_x = +c s (c = t/s from 0.02 to 0.5, both
+ *     sides of the switch c = f_t/f_c where the dominant mode changes) the
+ *     peak of s lies on the linear envelope t/f_t + s/f_c = 1 (at c =
+ *     f_t/f_c exactly, where both modes fail at once, within 0.5 %); uniaxial
+ *     compression and tension peak at f_c and f_t and follow the same curves
+ *     as without the interaction; pure tension leaves the compressive
+ *     damage and its envelope strain at exactly 0. Without the interaction
+ *     the envelope is square: at c = f_t/f_c both strengths are reached at
+ *     once (t/f_t + s/f_c = 2).
+ * (b) mortar (`Compressive softening = false'), triaxial compression
+ *     (-sigma_y, -p, -p) for p = 0.5, 1, 2 MPa: |sigma_y| rises to
+ *     f_m + k p with the law's own k, k0 = (1 + 2 alpha)/(1 - alpha) of the
+ *     default `Confinement coefficient' and k = 4.1 when it is set, and
+ *     stays there (flow without softening) at every step after the
+ *     envelope strain has passed its peak strain, to |e_yy| = 0.05.
+ *
+ * The peak of a path is located by restarting from the step before the
+ * largest |sigma_y| with 50 times smaller steps, three times.
+ */
+#include <masonry/brickwork/brick_material.h>
+#include <masonry/core/plugins.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+
+#include "vault_tests.h"
+
+using namespace dealii;
+using masonry::brickwork::BrickMaterial;
+using masonry::brickwork::BrickPoint;
+
+namespace
+{
+  std::unique_ptr<BrickMaterial>
+  material(const std::string &model, const std::string &entries)
+  {
+    ParameterHandler prm;
+    masonry::plugins::Registry<BrickMaterial>::declare_parameters(prm);
+    const std::string section =
+      model == "mortar" ? "Mortar" : "Damage plasticity";
+    prm.parse_input_from_string(
+      "subsection Brick material\nset Model = " + model + "\nsubsection " +
+      section + "\n" + entries + "end\nend\n");
+    return masonry::plugins::Registry<BrickMaterial>::create(prm);
+  }
+
+  unsigned int
+  n_state(const BrickMaterial &law)
+  {
+    unsigned int n = 0;
+    for (const auto &v : law.state_variables())
+      n += v.n_components;
+    return n;
+  }
+
+  /** A converged point of a path. */
+  struct PathPoint
+  {
+    SymmetricTensor<2, 3> strain, stress;
+    std::vector<double>   state;
+  };
+
+  /**
+   * Lateral stresses as functions of sigma_yy: sigma_xx = a0 + a1 sigma_yy,
+   * sigma_zz = b0 + b1 sigma_yy.
+   */
+  struct Control
+  {
+    double a0 = 0, a1 = 0, b0 = 0, b1 = 0;
+  };
+
+  /** Advance from @p start to e_yy = @p target in @p n equal steps. */
+  std::vector<PathPoint>
+  advance(const BrickMaterial &law,
+          const Control       &control,
+          const PathPoint     &start,
+          const double         target,
+          const unsigned int   n)
+  {
+    BrickPoint point;
+    point.characteristic_length = 0.01;
+    std::vector<PathPoint> path;
+    PathPoint              current = start;
+    const double           e0      = start.strain[1][1];
+    for (unsigned int step = 1; step <= n; ++step)
+      {
+        SymmetricTensor<2, 3> strain = current.strain;
+        strain[1][1]                 = e0 + (target - e0) * step / n;
+        std::vector<double>   updated(current.state.size());
+        SymmetricTensor<2, 3> stress;
+        SymmetricTensor<4, 3> C;
+        for (unsigned int it = 0;; ++it)
+          {
+            law.evaluate(strain, current.state, point, updated, stress, C);
+            const double r0 =
+              stress[0][0] - control.a0 - control.a1 * stress[1][1];
+            const double r1 =
+              stress[2][2] - control.b0 - control.b1 * stress[1][1];
+            if (std::hypot(r0, r1) < 1e-9 * law.tensile_strength())
+              break;
+            if (it == 50)  // past a tensile peak the mixed control can have
+              return path; // no solution: the path ends there
+            const double J00 = C[0][0][0][0] - control.a1 * C[1][1][0][0];
+            const double J01 = C[0][0][2][2] - control.a1 * C[1][1][2][2];
+            const double J10 = C[2][2][0][0] - control.b1 * C[1][1][0][0];
+            const double J11 = C[2][2][2][2] - control.b1 * C[1][1][2][2];
+            const double det = J00 * J11 - J01 * J10;
+            strain[0][0] -= (J11 * r0 - J01 * r1) / det;
+            strain[2][2] -= (-J10 * r0 + J00 * r1) / det;
+          }
+        current.strain = strain;
+        current.stress = stress;
+        current.state  = updated;
+        path.push_back(current);
+      }
+    return path;
+  }
+
+  /** The point of largest |sigma_yy| on the path to @p target, refined. */
+  PathPoint
+  peak(const BrickMaterial &law,
+       const Control       &control,
+       const double         target,
+       const unsigned int   n = 2000)
+  {
+    PathPoint start;
+    start.state.assign(n_state(law), 0.);
+    std::vector<PathPoint> path = advance(law, control, start, target, n);
+    for (unsigned int refinement = 0;; ++refinement)
+      {
+        unsigned int i = 0;
+        for (unsigned int j = 1; j < path.size(); ++j)
+          if (std::abs(path[j].stress[1][1]) > std::abs(path[i].stress[1][1]))
+            i = j;
+        if (path.empty())
+          return start;
+        if (refinement == 3)
+          return path[i];
+        const PathPoint from = i > 0 ? path[i - 1] : start;
+        const double    to   = i + 1 < path.size() ?
+                                 path[i + 1].strain[1][1] :
+                                 2 * path[i].strain[1][1] - from.strain[1][1];
+        start                = from;
+        path                 = advance(law, control, from, to, 100);
+      }
+  }
+
+  /** Diagnostics (measured errors) on stderr when VERBOSE is set; the
+   * compared output holds only the checks. */
+  std::ostream &
+  log()
+  {
+    static std::ostream none(nullptr);
+    return std::getenv("VERBOSE") ? std::cerr : none;
+  }
+
+  double
+  state_value(const BrickMaterial       &law,
+              const std::vector<double> &state,
+              const std::string         &name)
+  {
+    unsigned int offset = 0;
+    for (const auto &v : law.state_variables())
+      {
+        if (v.name == name)
+          return state[offset];
+        offset += v.n_components;
+      }
+    AssertThrow(false, ExcMessage("no state variable " + name));
+    return 0;
+  }
+
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+
+  // (a) the unit
+  const auto   unit   = material("damage plasticity",
+                             "set Tension-compression interaction = true\n");
+  const auto   square = material("damage plasticity", "");
+  const double f_c = 20e6, f_t = 2e6, eps_c = 0.004;
+  {
+    auto envelope = [&](const double c) {
+      Control control;
+      control.a1        = -c; // sigma_x = c |sigma_y|
+      const PathPoint p = peak(*unit, control, -2 * eps_c);
+      const double    s = -p.stress[1][1], t = p.stress[0][0];
+      log() << "c = " << c << ": s = " << s << ", t = " << t
+            << ", t/f_t + s/f_c - 1 = " << t / f_t + s / f_c - 1 << "\n";
+      return std::abs(t / f_t + s / f_c - 1);
+    };
+    double worst = 0;
+    for (const double c : {0.02, 0.05, 0.099, 0.101, 0.2, 0.5})
+      worst = std::max(worst, envelope(c));
+    log() << "largest |t/f_t + s/f_c - 1| = " << worst << "\n";
+    vault_tests::check(worst < 1e-6,
+                       "unit, proportional compression with lateral tension "
+                       "(t/s = 0.02, 0.05, 0.099 compression, 0.101, 0.2, "
+                       "0.5 tension dominating): peak on t/f_t + s/f_c = 1 "
+                       "(1e-6)");
+    vault_tests::check(envelope(0.1) < 5e-3,
+                       "t/s = f_t/f_c, both modes at once (the corner of "
+                       "the two criteria): on the envelope within 0.5 %");
+    Control control;
+    control.a1         = -0.1;
+    const PathPoint p  = peak(*square, control, -2 * eps_c);
+    const double    sq = p.stress[0][0] / f_t - p.stress[1][1] / f_c;
+    log() << "without the interaction, t/s = 0.1: " << sq << "\n";
+    vault_tests::check(sq > 1.5,
+                       "without the interaction the envelope is square: "
+                       "t/f_t + s/f_c > 1.5 at t/s = f_t/f_c");
+  }
+  {
+    const Control   uniaxial;
+    const PathPoint c = peak(*unit, uniaxial, -2 * eps_c);
+    const PathPoint t = peak(*unit, uniaxial, 10 * f_t / 10e9);
+    log() << "uniaxial peaks: " << -c.stress[1][1] / f_c - 1 << ", "
+          << t.stress[1][1] / f_t - 1 << "\n";
+    vault_tests::check(std::abs(-c.stress[1][1] / f_c - 1) < 1e-6 &&
+                         std::abs(t.stress[1][1] / f_t - 1) < 1e-6,
+                       "with the interaction, uniaxial compression and "
+                       "tension peak at f_c and f_t (1e-6)");
+    PathPoint start;
+    start.state.assign(n_state(*unit), 0.);
+    double difference = 0;
+    for (const double target : {-2 * eps_c, 10 * f_t / 10e9})
+      {
+        const auto with    = advance(*unit, uniaxial, start, target, 400);
+        const auto without = advance(*square, uniaxial, start, target, 400);
+        for (unsigned int i = 0; i < with.size(); ++i)
+          difference =
+            std::max(difference,
+                     std::abs(with[i].stress[1][1] - without[i].stress[1][1]) /
+                       f_t);
+      }
+    log() << "uniaxial curves with/without: " << difference << "\n";
+    vault_tests::check(difference < 1e-6,
+                       "uniaxial compression and tension curves with the "
+                       "interaction = without it (1e-6 of f_t)");
+    const auto  tension = advance(*unit, uniaxial, start, 10 * f_t / 10e9, 400);
+    const auto &end     = tension.back();
+    vault_tests::check(state_value(*unit, end.state, "damage_tension") > 0.5 &&
+                         state_value(*unit, end.state, "damage_compression") ==
+                           0 &&
+                         state_value(*unit, end.state, "kappa_compression") ==
+                           0,
+                       "pure tension to 10 f_t / E0: cracked (d_t > 0.5), "
+                       "compressive damage and envelope strain exactly 0");
+  }
+
+  // (b) the mortar
+  const double f_m = 5e6, rho = 1.16, alpha = (rho - 1) / (2 * rho - 1);
+  const double k0 = (1 + 2 * alpha) / (1 - alpha);
+  for (const double k : {0., 4.1})
+    {
+      const auto mortar =
+        material("mortar",
+                 k == 0 ? std::string() :
+                          "set Confinement coefficient = 4.1\n");
+      const double k_law      = k == 0 ? k0 : k;
+      double       worst_peak = 0, worst_flow = 0;
+      for (const double p : {0.5e6, 1e6, 2e6})
+        {
+          Control control;
+          control.a0 = control.b0  = -p;
+          const double    expected = f_m + k_law * p;
+          const PathPoint top      = peak(*mortar, control, -0.05);
+          worst_peak =
+            std::max(worst_peak, std::abs(-top.stress[1][1] / expected - 1));
+          PathPoint start;
+          start.state.assign(n_state(*mortar), 0.);
+          const auto path = advance(*mortar, control, start, -0.05, 500);
+          // the plateau: every point whose envelope strain has passed
+          // the peak strain eps_c of the (unconfined) envelope
+          unsigned int n_plateau = 0;
+          for (const auto &q : path)
+            if (state_value(*mortar, q.state, "kappa_compression") >= 0.01)
+              {
+                ++n_plateau;
+                worst_flow = std::max(worst_flow,
+                                      std::abs(-q.stress[1][1] / expected - 1));
+              }
+          AssertThrow(n_plateau > 100, ExcMessage("plateau not reached"));
+          log() << "mortar k = " << k_law << ", p = " << p << ": peak "
+                << -top.stress[1][1] << " expected " << expected << ", end "
+                << -path.back().stress[1][1] << "\n";
+        }
+      log() << "worst peak " << worst_peak << ", flow " << worst_flow << "\n";
+      vault_tests::check(worst_peak < 1e-6 && worst_flow < 1e-6,
+                         "mortar, triaxial (-sigma_y, -p, -p), p = 0.5, 1, "
+                         "2 MPa, k = " +
+                           std::string(k == 0 ? "k0 = (1 + 2 alpha)/(1 - "
+                                                "alpha) = 1.414" :
+                                                "4.1 (set)") +
+                           ": peak |sigma_y| = f_m + k p and the same "
+                           "at every step past the envelope's peak strain, "
+                           "to |e_yy| = 0.05 (flow, no softening), 1e-6");
+    }
+}
