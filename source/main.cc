@@ -6,6 +6,7 @@
  * behind libmasonry, deal.II, Trilinos, PETSc, OpenCASCADE, Open MPI, is
  * most of the start-up time); everything else loads libmasonry with
  * dlopen() and calls masonry_main() (MPI_Init, run_application()).
+ * Measurements: contrib/benchmarks/startup.
  */
 #include <masonry/config.h>
 #include <masonry/core/usage.h>
@@ -74,8 +75,21 @@ main(int argc, char **argv)
         }
     }
 
+  // A process not started by mpirun is an MPI singleton of one rank: Open
+  // MPI need not start its orted daemon for it (masonry never spawns
+  // processes) nor probe the matching transport layers (with libpsm2
+  // installed and no Omni-Path card, the psm2 layer polls for 0.2 s); only
+  // defaults, a user's own setting of these variables wins.
+  if (!under_mpi())
+    {
+      ::setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
+      ::setenv("OMPI_MCA_pml", "ob1", 0);
+    }
+
   // next to the executable (build tree), in ../lib (installed), or where
-  // the dynamic loader finds it; RTLD_GLOBAL for Open MPI's components
+  // the dynamic loader finds it; RTLD_GLOBAL for Open MPI's components.
+  // RTLD_LAZY: functions of the ~200 libraries are bound when first called,
+  // not all of them at load time (LD_BIND_NOW=1 restores that).
   const std::string directory = own_directory();
   void             *library   = nullptr;
   std::string       errors;
@@ -83,7 +97,7 @@ main(int argc, char **argv)
                                        directory + "../lib/libmasonry.so",
                                        std::string("libmasonry.so")})
     {
-      library = ::dlopen(candidate.c_str(), RTLD_NOW | RTLD_GLOBAL);
+      library = ::dlopen(candidate.c_str(), RTLD_LAZY | RTLD_GLOBAL);
       if (library)
         break;
       errors += std::string("\n  ") + ::dlerror();

@@ -20,6 +20,15 @@
  *     default `Confinement coefficient' and k = 4.1 when it is set, and
  *     stays there (flow without softening) at every step after the
  *     envelope strain has passed its peak strain, to |e_yy| = 0.05.
+ * (c) both: Hilsdorf's prism with uniform fields (a unit point and a
+ *     mortar point with the same vertical stress, the same lateral strain
+ *     and lateral equilibrium h_b sigma_x,b + h_m sigma_x,m = 0) peaks at
+ *     f_b (f_bt + a f_m) / (f_bt + a f_b), a = h_m / (k h_b): the mortar
+ *     (isochoric flow, nu_p = 0.5) keeps expanding, its pressure p = r t
+ *     loads the unit to the linear envelope while the mortar is on its
+ *     plateau f_m + k p. With the flow of the elastic strain the mortar
+ *     stops expanding at p = nu_m |sigma_y| / (1 - nu_m) and the prism
+ *     flows at f_m / (1 - k nu_m / (1 - nu_m)) without loading the unit.
  *
  * The peak of a path is located by restarting from the step before the
  * largest |sigma_y| with 50 times smaller steps, three times.
@@ -31,6 +40,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -182,6 +192,66 @@ namespace
     return 0;
   }
 
+  /**
+   * The Hilsdorf prism with uniform fields: a unit point (height h_b) and a
+   * mortar point (h_m) with the same vertical stress, the same lateral
+   * strain in x and z and h_b sigma_x,b + h_m sigma_x,m = 0; the mean
+   * vertical strain is prescribed, in @p n steps to @p target. Returns the
+   * largest |sigma_y| and, through @p last, the unit's state at the end.
+   */
+  double
+  hilsdorf_prism(const BrickMaterial &unit,
+                 const BrickMaterial &mortar,
+                 const double         h_b,
+                 const double         h_m,
+                 const double         target,
+                 const unsigned int   n,
+                 std::vector<double> &last)
+  {
+    BrickPoint point;
+    point.characteristic_length = 0.01;
+    std::vector<double> old_b(n_state(unit), 0.), old_m(n_state(mortar), 0.);
+    std::vector<double> new_b = old_b, new_m = old_m;
+    double              e_lat = 0, e_b = 0, peak = 0;
+    auto residual = [&](const double lat, const double eb, const double mean) {
+      const double          em = ((h_b + h_m) * mean - h_b * eb) / h_m;
+      SymmetricTensor<2, 3> a, b, sa, sb;
+      SymmetricTensor<4, 3> C;
+      a[0][0] = a[2][2] = b[0][0] = b[2][2] = lat;
+      a[1][1]                               = eb;
+      b[1][1]                               = em;
+      unit.evaluate(a, old_b, point, new_b, sa, C);
+      mortar.evaluate(b, old_m, point, new_m, sb, C);
+      return std::array<double, 3>{
+        {sa[1][1] - sb[1][1], h_b * sa[0][0] + h_m * sb[0][0], sa[1][1]}};
+    };
+    for (unsigned int step = 1; step <= n; ++step)
+      {
+        const double mean = target * step / n;
+        for (unsigned int it = 0;; ++it)
+          {
+            const auto r = residual(e_lat, e_b, mean);
+            if (std::hypot(r[0], r[1]) < 1e-3) // Pa
+              {
+                peak = std::max(peak, -r[2]);
+                break;
+              }
+            AssertThrow(it < 50, ExcMessage("prism: no convergence"));
+            const double h   = 1e-9;
+            const auto   rl  = residual(e_lat + h, e_b, mean);
+            const auto   rb  = residual(e_lat, e_b + h, mean);
+            const double J00 = (rl[0] - r[0]) / h, J01 = (rb[0] - r[0]) / h;
+            const double J10 = (rl[1] - r[1]) / h, J11 = (rb[1] - r[1]) / h;
+            const double det = J00 * J11 - J01 * J10;
+            e_lat -= (J11 * r[0] - J01 * r[1]) / det;
+            e_b -= (-J10 * r[0] + J00 * r[1]) / det;
+          }
+        old_b = new_b;
+        old_m = new_m;
+      }
+    last = old_b;
+    return peak;
+  }
 } // namespace
 
 int
@@ -311,4 +381,36 @@ main(int argc, char **argv)
                            "at every step past the envelope's peak strain, "
                            "to |e_yy| = 0.05 (flow, no softening), 1e-6");
     }
+
+  // (c) the two together: Hilsdorf's prism
+  {
+    const double        h_b = 0.065, h_m = 0.01, f_bt = 2e6;
+    const double        a        = h_m / (k0 * h_b);
+    const double        hilsdorf = f_c * (f_bt + a * f_m) / (f_bt + a * f_c);
+    const auto          mortar   = material("mortar", "");
+    std::vector<double> last;
+    const double        peak =
+      hilsdorf_prism(*unit, *mortar, h_b, h_m, -0.02, 4000, last);
+    log() << "Hilsdorf " << hilsdorf << ", two-point prism " << peak << " ("
+          << peak / hilsdorf - 1 << ")\n";
+    vault_tests::check(std::abs(peak / hilsdorf - 1) < 1e-4,
+                       "Hilsdorf prism, uniform fields (unit with the "
+                       "interaction, mortar with k0 and nu_p = 0.5, h_b/h_m "
+                       "= 6.5): peak = f_b (f_bt + a f_m) / (f_bt + a f_b) = "
+                       "12.18 MPa, a = h_m / (k h_b) (0.1 %)");
+    const auto elastic_flow =
+      material("mortar", "set Plastic Poisson's ratio = elastic\n");
+    const double nu_m    = 0.2;
+    const double plateau = f_m / (1 - k0 * nu_m / (1 - nu_m));
+    const double top =
+      hilsdorf_prism(*unit, *elastic_flow, h_b, h_m, -0.02, 4000, last);
+    const double d_unit = state_value(*unit, last, "damage_compression");
+    log() << "elastic flow: " << top << " against " << plateau << ", unit d_c "
+          << d_unit << "\n";
+    vault_tests::check(std::abs(top / plateau - 1) < 5e-3 && d_unit < 0.01,
+                       "with `Plastic Poisson's ratio = elastic' the mortar "
+                       "stops expanding at p = nu_m |sigma_y| / (1 - nu_m): "
+                       "the prism flows at f_m / (1 - k nu_m / (1 - nu_m)) = "
+                       "7.73 MPa (0.5 %), the unit stays intact (d_c < 0.01)");
+  }
 }

@@ -45,7 +45,11 @@
  *   k (1 - alpha) - (1 + 2 alpha), when all principal stresses are
  *   compressive, so that |sigma_1| = f_c + k p under (-sigma_1, -p, -p);
  * - `Compressive softening' = false: the envelope stays at f_c after its
- *   peak (plugin `mortar', which only changes the defaults).
+ *   peak (plugin `mortar', which only changes the defaults);
+ * - `Plastic Poisson's ratio' nu_p: the compressive plastic strain grows
+ *   along C_p^-1 : s- (compliance with E0, nu_p) instead of C0^-1 : s-,
+ *   with the multiplier from a scalar root search (flow()); a confined
+ *   mortar keeps expanding laterally only with nu_p > p / (|sigma_1| + p).
  */
 #include <masonry/brickwork/brick_material.h>
 #include <masonry/core/parameters.h>
@@ -53,6 +57,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <string>
 
 namespace masonry
 {
@@ -128,7 +133,7 @@ namespace masonry
      */
     struct DamagePlasticityDefaults
     {
-      const char *E, *nu, *f_c, *eps_c, *f_t, *G_f, *softening, *what;
+      const char *E, *nu, *f_c, *eps_c, *f_t, *G_f, *softening, *nu_p, *what;
     };
 
     /** See the file documentation. */
@@ -146,6 +151,7 @@ namespace masonry
                  "2e6",
                  "80",
                  "true",
+                 "elastic",
                  "enlarged bricks"});
       }
 
@@ -265,6 +271,20 @@ namespace masonry
           "+ 2 alpha). Richart et al. (1928) measured k of about 4.1 for "
           "concrete (recalled, not checked against the paper).");
         prm.declare_entry(
+          "Plastic Poisson's ratio",
+          defaults.nu_p,
+          dealii::Patterns::Anything(),
+          "Direction of the compressive plastic flow: `elastic' (the plastic "
+          "strain grows along C0^-1 : s-, as the elastic strain, and the "
+          "uniaxial response is exactly the input curve) or a number nu_p "
+          "(dimensionless, -1 < nu_p < 1): along C_p^-1 : s- with the "
+          "compliance of E0 and nu_p, so 0.5 is isochoric flow and larger "
+          "values dilate. A confined layer keeps expanding laterally only "
+          "if nu_p exceeds the ratio p / (|sigma_1| + p) of its stresses; "
+          "with `elastic' its lateral pressure stops at p = nu |sigma_1| / "
+          "(1 - nu). The peak and plateau stay on the envelope; the strain "
+          "at which a point reaches them changes.");
+        prm.declare_entry(
           "Tension-compression interaction",
           "false",
           Bool(),
@@ -299,6 +319,27 @@ namespace masonry
         softening     = prm.get_bool("Compressive softening");
         interaction   = prm.get_bool("Tension-compression interaction");
         k_confinement = prm.get_double("Confinement coefficient");
+        {
+          const std::string flow = prm.get("Plastic Poisson's ratio");
+          radial_flow            = flow == "elastic";
+          if (!radial_flow)
+            {
+              std::size_t end = 0;
+              try
+                {
+                  nu_p = std::stod(flow, &end);
+                }
+              catch (...)
+                {
+                  end = 0;
+                }
+              AssertThrow(end == flow.size() && end > 0 && nu_p > -1 &&
+                            nu_p < 1,
+                          ExcParameter("Plastic Poisson's ratio",
+                                       "must be `elastic' or a number "
+                                       "strictly between -1 and 1"));
+            }
+        }
         auto positive = [](const double v, const char *entry) {
           AssertThrow(v > 0, ExcParameter(entry, "must be positive"));
         };
@@ -597,6 +638,73 @@ namespace masonry
             ((d_c - d_t) * dP + (1 - d_c) * dealii::identity_tensor<3>()) * C0;
       }
 
+      /**
+       * The compressive return with `Plastic Poisson's ratio' nu_p != nu:
+       * the plastic strain grows by lambda C_p^-1 : s- (C_p the compliance
+       * with E0 and nu_p), the effective stress by -lambda C0 : C_p^-1 : s-
+       * = -lambda (a_d dev(s-) + a_v vol(s-)), a_d = (1 + nu_p) / (1 + nu),
+       * a_v = (1 - 2 nu_p) / (1 - 2 nu); lambda is the root of "compressive
+       * measure of the new effective stress (with the interaction, if on,
+       * at the new damage 1 - @p intact_c) = @p T" on (0, 1 / a_d), where
+       * the deviator vanishes (false position, Illinois). On return @p plus,
+       * @p minus, @p tau_t and @p tau_c are those of the new effective
+       * stress.
+       */
+      void
+      flow(SymmetricTensor<2, 3> &minus,
+           const double           intact_c,
+           const double           d_t,
+           const double           phi,
+           const double           T,
+           State                 &updated,
+           SymmetricTensor<2, 3> &plus,
+           double                &tau_t,
+           double                &tau_c) const
+      {
+        const double                a_d = (1 + nu_p) / (1 + nu);
+        const double                a_v = (1 - 2 * nu_p) / (1 - 2 * nu);
+        const SymmetricTensor<2, 3> I   = dealii::unit_symmetric_tensor<3>();
+        const SymmetricTensor<2, 3> G =
+          a_d * dealii::deviator(minus) + a_v * dealii::trace(minus) / 3 * I;
+        const SymmetricTensor<2, 3> s0 = plus + minus;
+        SymmetricTensor<2, 3>       p, m;
+        double                      tt, tc;
+        auto                        excess = [&](const double lambda) {
+          split(s0 - lambda * G, p, m, tt, tc);
+          const double share =
+            interaction_share(tc, tt, 1 - intact_c, d_t, phi);
+          return tc / (1 - share) - T;
+        };
+        double a = 0, b = 1 / a_d, fa = excess(a), fb = excess(b);
+        double lambda = b;
+        if (fb < 0 && fa > 0) // else: as far as the flow goes
+          for (unsigned int it = 0, side = 2; it < 100; ++it)
+            {
+              lambda         = (a * fb - b * fa) / (fb - fa);
+              const double f = excess(lambda);
+              if (std::abs(f) <= 1e-12 * T)
+                break;
+              if (f > 0)
+                {
+                  a = lambda, fa = f;
+                  if (side == 0)
+                    fb /= 2;
+                  side = 0;
+                }
+              else
+                {
+                  b = lambda, fb = f;
+                  if (side == 1)
+                    fa /= 2;
+                  side = 1;
+                }
+            }
+        updated.plastic_strain +=
+          lambda *
+          ((1 + nu_p) / E * minus - nu_p / E * dealii::trace(minus) * I);
+        split(s0 - lambda * G, plus, minus, tau_t, tau_c);
+      }
+
       /** C0 : e. */
       SymmetricTensor<2, 3>
       effective(const SymmetricTensor<2, 3> &e) const
@@ -833,9 +941,22 @@ namespace masonry
                              std::min((1 - d_t) * tau_t / (phi * f_t), 0.5),
                              T) :
                          T / tau_c;
-              updated.plastic_strain += (1 - s) * compliance(minus);
-              minus *= s;
-              tau_c *= s;
+              if (radial_flow)
+                {
+                  updated.plastic_strain += (1 - s) * compliance(minus);
+                  minus *= s;
+                  tau_c *= s;
+                }
+              else
+                flow(minus,
+                     1 - env.damage,
+                     d_t,
+                     phi,
+                     T,
+                     updated,
+                     plus,
+                     tau_t,
+                     tau_c);
               updated.kappa_c     = e;
               updated.threshold_c = T;
               d_c                 = env.damage;
@@ -905,6 +1026,9 @@ namespace masonry
       double alpha = 0, lambda = 0, mu = 0;
       /** `Compressive softening', `Tension-compression interaction'. */
       bool softening = true, interaction = false;
+      /** `Plastic Poisson's ratio': elastic (radial) or nu_p. */
+      bool   radial_flow = true;
+      double nu_p        = 0.15;
       /** `Confinement coefficient' and Lubliner's gamma from it. */
       double k_confinement = 0, gamma = 0;
       /** The initial stiffness. */
@@ -923,8 +1047,16 @@ namespace masonry
       static void
       declare_parameters(dealii::ParameterHandler &prm)
       {
-        declare(
-          prm, {"1e9", "0.2", "5e6", "0.01", "0.5e6", "10", "false", "mortar"});
+        declare(prm,
+                {"1e9",
+                 "0.2",
+                 "5e6",
+                 "0.01",
+                 "0.5e6",
+                 "10",
+                 "false",
+                 "0.5",
+                 "mortar"});
       }
     };
   } // namespace brickwork
@@ -935,8 +1067,9 @@ MASONRY_REGISTER_BRICK_MATERIAL(
   "mortar",
   "The law of `damage plasticity' for a mortar layer meshed with "
   "hexahedra, with a mortar's defaults (E0 = 1 GPa, nu = 0.2, f_c = f_m = 5 "
-  "MPa, eps_c = 0.01, f_t = 0.5 MPa, G_f = 10 J/m^2; assumed typical "
-  "values, not from a source) and `Compressive softening' = false: under "
+  "MPa, eps_c = 0.01, f_t = 0.5 MPa, G_f = 10 J/m^2, isochoric flow "
+  "`Plastic Poisson's ratio' = 0.5; assumed typical values, not from a "
+  "source) and `Compressive softening' = false: under "
   "the units the layer is in triaxial compression and flows at its "
   "confined strength |sigma_1| = f_m + k p (`Confinement coefficient' k) "
   "without softening.")
