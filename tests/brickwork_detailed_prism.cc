@@ -203,32 +203,10 @@ namespace
                "  end\n"
                "end\n");
   }
-  /**
-   * The same prism with the laws of issue 16: units `damage plasticity'
-   * (f_b = 20 MPa, f_bt = 2 MPa, tension-compression interaction), mortar
-   * `mortar' (f_m = 5 MPa, nu_m = 0.2, no compressive softening, the
-   * cone's confinement coefficient k), elastic stiff bond, free platens,
-   * IMPL-EX to strain 0.005.
-   *
-   * Closed form of the uniform layered state: the mortar flows at its
-   * confined strength |sigma_z| = f_m + k p. Its plastic strain grows along
-   * C0^-1 : s (the law's flow rule, no dilatancy), whose lateral part
-   * (nu_m |sigma_z| - (1 - nu_m) p) / E_m vanishes at
-   * p = nu_m / (1 - nu_m) |sigma_z|; past that the mortar flows without
-   * pushing the units further, so the lateral pressure stops there and the
-   * prism's stress tends to the plateau
-   *   sigma_p = f_m / (1 - k nu_m / (1 - nu_m)),
-   * 7.733 MPa for k = 1.41379, nu_m = 0.2; the units' lateral tension
-   * p n_m h_m / (n_b h_b) = 0.198 MPa stays far inside their envelope. The
-   * design note's Hilsdorf estimate (the mortar pressure grows until the
-   * unit fails on t/f_bt + s/f_b = 1) needs p = 0.42 |sigma_z| and is not
-   * reached by a mortar law without plastic dilatancy: it is printed for
-   * comparison, not asserted.
-   */
-  void
-  confinement(const double nb, const double nm, const double r)
+  /** The wide prism of the peak checks: @p cells x @p cells in plan. */
+  std::string
+  plastic_prism(const unsigned int cells, const double target)
   {
-    const double       fm = 5e6, fb = 20e6, fbt = 2e6;
     std::ostringstream w;
     w << "  set Model = detailed\n"
          "  set Brick length = 2.0\n"
@@ -237,39 +215,94 @@ namespace
          "  set Joint thickness = 0.010\n"
          "  set Courses = 3\n"
          "  set Length in bricks = 1\n"
-         "  set Elements along the length = 8\n"
-         "  set Elements along the width = 8\n"
+         "  set Elements along the length = "
+      << cells << "\n  set Elements along the width = " << cells
+      << "\n"
          "  set Elements along the height = 2\n"
          "  set Platen lateral restraint = free\n"
-         "  set Target strain = 0.005\n"
-         "  set Number of steps = 50\n"
-         "  set Damage integration = implex\n";
-    auto         summary = run("confined", prm(w.str(), plastic_laws));
-    const double k =
-      summary["derived_values"]["mortar_material"]["confinement_coefficient"]
-        .as_number();
-    const double ratio    = num / (1 - num);
-    const double sp       = fm / (1 - k * ratio);
-    const double a        = 1 / (k * r),
-                 hilsdorf = fb * (fbt + a * fm) / (fbt + a * fb);
-    const double peak     = summary["peak_stress"].as_number();
-    const double sz = std::abs(summary["centre_mortar_stress_zz"].as_number());
-    const double p  = -summary["centre_mortar_stress_xx"].as_number();
-    const double t  = summary["centre_unit_stress_xx"].as_number();
-    std::cout << std::setprecision(4) << "confined mortar: k = " << k
-              << ", plateau " << sp * 1e-6 << " MPa, peak at strain 0.005 "
-              << std::round(peak * 1e-4) * 1e-2 << " MPa; Hilsdorf "
-              << hilsdorf * 1e-6 << " MPa (not reached)\n";
-    check(peak < sp * (1 + 1e-4) && relative(peak, sp) < 5e-3,
-          "peak tends to the confined mortar's plateau f_m / (1 - k nu_m / "
-          "(1 - nu_m)) from below (0.5 % at strain 0.005)");
-    check(relative(p / sz, ratio) < 0.01,
-          "mortar's lateral pressure at the centre = nu_m / (1 - nu_m) "
-          "|sigma_z| (1 %)");
-    check(relative(t, p * nm * hm / (nb * hb)) < 0.01,
-          "unit's lateral tension at the centre = p n_m h_m / (n_b h_b) (1 %)");
-    check(summary["max_brick_damage_tension"].as_number() == 0,
-          "the units do not crack");
+         "  set Target strain = "
+      << target << "\n  set Number of steps = " << std::lround(target / 1e-4)
+      << "\n  set Damage integration = implex\n";
+    return w.str();
+  }
+
+  /**
+   * The same wide prism with the laws of issue 16: units `damage
+   * plasticity' (f_b = 20 MPa, f_bt = 2 MPa, tension-compression
+   * interaction), mortar `mortar' (f_m = 5 MPa, E_m = 1 GPa, nu_m = 0.2;
+   * its defaults: no compressive softening, isochoric plastic flow, the
+   * cone's confinement coefficient k), elastic stiff bond, free platens,
+   * IMPL-EX.
+   *
+   * Peak (design note, Hilsdorf): the mortar flows at its confined strength
+   * |sigma_z| = f_m + k p and keeps expanding, the pressure p grows until
+   * the unit, in lateral tension t = p / r (r = n_b h_b / (n_m h_m) for
+   * this stack, as above), fails on t / f_bt + |sigma_z| / f_b = 1:
+   *   f = f_b (f_bt + a f_m) / (f_bt + a f_b), a = 1 / (k r),
+   * 13.69 MPa with k = 1.41379 and r = 9.75. Measured on 2 m x 2 m with
+   * 4 x 4, 8 x 8 cells in plan: 1.0 %, 1.7 % below (the free sides, where
+   * the mortar is not confined, carry less as the mesh resolves them; see
+   * doc/brickwork.md for the finer runs): tolerance 3 %.
+   *
+   * Without plastic dilatancy (`Plastic Poisson's ratio = elastic': the
+   * plastic strain grows along C0^-1 : s) the mortar's lateral plastic
+   * strain vanishes at p = nu_m / (1 - nu_m) |sigma_z|, the pressure stops
+   * there, and the prism flows at f_m / (1 - k nu_m / (1 - nu_m)) =
+   * 7.733 MPa with intact units, reached from below (0.26 % at strain
+   * 0.005 on 4 x 4 cells; lateral pressure 0.37 % from the ratio).
+   */
+  void
+  confinement(const double nb, const double nm, const double r)
+  {
+    const double fm = 5e6, fb = 20e6, fbt = 2e6;
+    {
+      auto summary =
+        run("hilsdorf", prm(plastic_prism(8, 0.0062), plastic_laws));
+      const double k =
+        summary["derived_values"]["mortar_material"]["confinement_coefficient"]
+          .as_number();
+      const double a = 1 / (k * r), f = fb * (fbt + a * fm) / (fbt + a * fb);
+      const double peak = summary["peak_stress"].as_number();
+      std::cout << std::setprecision(4) << "Hilsdorf: k = " << k << ", "
+                << f * 1e-6 << " MPa\n";
+      check(relative(peak, f) < 0.03,
+            "peak = Hilsdorf's prism strength with the laws' k, f_bt, f_b, "
+            "f_m (3 %)");
+      check(summary["final_stress"].as_number() < 0.95 * peak,
+            "the prism is past its peak at the end");
+    }
+    {
+      std::string laws = plastic_laws;
+      laws.replace(laws.find("    set Tensile fracture energy = 100\n"),
+                   0,
+                   "    set Plastic Poisson's ratio = elastic\n");
+      auto         summary = run("plateau", prm(plastic_prism(4, 0.005), laws));
+      const double k =
+        summary["derived_values"]["mortar_material"]["confinement_coefficient"]
+          .as_number();
+      const double ratio = num / (1 - num);
+      const double sp    = fm / (1 - k * ratio);
+      const double peak  = summary["peak_stress"].as_number();
+      const double sz =
+        std::abs(summary["centre_mortar_stress_zz"].as_number());
+      const double p = -summary["centre_mortar_stress_xx"].as_number();
+      const double t = summary["centre_unit_stress_xx"].as_number();
+      std::cout << "non-dilatant mortar: plateau " << sp * 1e-6 << " MPa\n";
+      check(peak < sp * (1 + 1e-4) && relative(peak, sp) < 1e-2,
+            "non-dilatant mortar: peak tends to f_m / (1 - k nu_m / (1 - "
+            "nu_m)) from below (1 % at strain 0.005)");
+      check(relative(p / sz, ratio) < 0.01,
+            "non-dilatant mortar: lateral pressure at the centre = nu_m / (1 "
+            "- nu_m) |sigma_z| (1 %)");
+      // measured 1.2 % on 4 x 4 cells (0.19 % on 8 x 8): the centre cells
+      // are 0.5 m wide
+      check(relative(t, p * nm * hm / (nb * hb)) < 0.02,
+            "unit's lateral tension at the centre = p n_m h_m / (n_b h_b) "
+            "(2 %)");
+      check(summary["max_brick_damage_tension"].as_number() == 0 &&
+              summary["max_brick_damage_compression"].as_number() < 0.01,
+            "non-dilatant mortar: the units stay intact");
+    }
   }
 } // namespace
 
