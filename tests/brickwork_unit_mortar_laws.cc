@@ -397,7 +397,7 @@ main(int argc, char **argv)
                        "Hilsdorf prism, uniform fields (unit with the "
                        "interaction, mortar with k0 and nu_p = 0.5, h_b/h_m "
                        "= 6.5): peak = f_b (f_bt + a f_m) / (f_bt + a f_b) = "
-                       "12.18 MPa, a = h_m / (k h_b) (0.1 %)");
+                       "12.18 MPa, a = h_m / (k h_b) (1e-4)");
     const auto elastic_flow =
       material("mortar", "set Plastic Poisson's ratio = elastic\n");
     const double nu_m    = 0.2;

@@ -1,10 +1,15 @@
 #!/usr/bin/python3
-"""Run the nine-wallette study (called by contrib/study/run, which documents
-the options): per thickness and seed, a copy of the example parameter file
-with the seed and the output directory changed, run as a 1-rank masonry run,
-several at a time; then report.py writes the table and the plots."""
+"""Run the wallette study (called by contrib/study/run, which documents
+the options): (a) the nine specimens, per thickness and seed a copy of the
+cyclic example parameter file with the seed and the output directory
+changed; (b) the single-leaf sweep over the unit strength f_b and the mortar
+strength f_m, a monotonic copy of the single-leaf cyclic example with the
+unit and mortar inputs of each pair (see sweep_inputs()); each a 1-rank
+masonry run, several at a time, with its CPU time recorded; then report.py
+writes the tables, the targets of issue 16 and the plots."""
 import argparse
 import json
+import math
 import os
 import re
 import subprocess
@@ -29,6 +34,183 @@ QUICK = {
 }
 QUICK_LENGTH = {"single": "2", "double": "4", "triple": "4"}
 
+# the sweep of issue 16: unit strength f_b x mortar strength f_m, MPa
+SWEEP_FB = (10.0, 20.0, 40.0)
+SWEEP_FM = (2.0, 5.0, 12.0)
+# the sweep runs monotonic past the peak (sweep_target()), nominal step
+# 1e-4 (--quick: 2e-4 on the coarsest mesh)
+SWEEP = {"Protocol": "monotonic", "Write VTU": "false"}
+SWEEP_STEP = 1e-4
+SWEEP_QUICK = dict(SWEEP, **{"Elements along the length": "2",
+                             "Elements along the width": "1",
+                             "Elements along the height": "1"})
+SWEEP_QUICK_STEP = 2e-4
+
+
+def sweep_target(f_b, E_m, h_b, h_m):
+    """Target strain of a sweep pair: 1.5 times the unit's strain at peak
+    (0.004, the examples') plus the strain of the mortar joints at f_b
+    (f_b h_m / ((h_b + h_m) E_m)), in [0.006, 0.03]: a soft mortar moves
+    the peak far out (f_m = 2 MPa: E_m = 0.4 GPa)."""
+    joint = f_b * h_m / ((h_b + h_m) * E_m)
+    return min(0.03, max(0.006, 1.5 * (0.004 + joint)))
+# the specimens' failure.png: small enough to keep with the results
+FAILURE_PLOT = {"Width": "1200", "Height": "600"}
+# --model: the entry of subsection Wallette that selects the model
+MODEL_ENTRY = "Model"
+
+
+def mortar_modulus(f_m):
+    """E_m, Pa, of a mortar of compressive strength f_m (MPa): E_m = 200 f_m,
+    the middle of the linear relation Kaushik et al. (2007) report for
+    cement-lime mortars (recalled, see doc/references-brickwork-strength.md)."""
+    return 200.0 * f_m * 1e6
+
+
+def sweep_inputs(f_b, f_m, nu_b=0.15, nu_m=0.2):
+    """The laboratory inputs of one sweep pair (SI): the unit's E_b = 500 f_b
+    (the examples' 10 GPa for 20 MPa), tensile strength 0.1 f_b (rule of
+    thumb), the mortar's E_m = mortar_modulus(f_m)."""
+    return {"f_b": f_b * 1e6, "f_bt": 0.1 * f_b * 1e6, "E_b": 500 * f_b * 1e6,
+            "nu_b": nu_b, "f_m": f_m * 1e6, "E_m": mortar_modulus(f_m),
+            "nu_m": nu_m}
+
+
+def joint_penalties(E_b, E_m, nu_b, nu_m, h_m):
+    """Lourenco-Rots penalties of a zero-thickness joint for units enlarged
+    by half a joint: k_n = E_b E_m / (h_m (E_b - E_m)), the same with the
+    shear moduli for k_s (Pa/m)."""
+    G_b, G_m = E_b / (2 * (1 + nu_b)), E_m / (2 * (1 + nu_m))
+    return (E_b * E_m / (h_m * (E_b - E_m)), G_b * G_m / (h_m * (G_b - G_m)))
+
+
+def set_in(text, path, name, value, add=True):
+    """Set `set NAME = VALUE' inside the nested subsections PATH (a list,
+    [] = top level) of a parameter file, keeping the line's comment; add
+    the line (and missing subsections) if ADD. Returns (text, found)."""
+    lines = text.split("\n")
+    stack, pattern = [], re.compile(r"^([ \t]*set[ \t]+" + re.escape(name) +
+                                    r"[ \t]*=)[^#]*(#.*)?$")
+    opened = None
+    for i, line in enumerate(lines):
+        m = re.match(r"^\s*subsection\s+(.*?)\s*$", line)
+        if m:
+            stack.append(m.group(1))
+            if stack == path and opened is None:
+                opened = i
+            continue
+        if re.match(r"^\s*end\s*$", line):
+            if stack:
+                stack.pop()
+            continue
+        m = pattern.match(line)
+        if m and stack == path:
+            comment = "  " + m.group(2) if m.group(2) else ""
+            lines[i] = m.group(1) + " " + value + comment
+            return "\n".join(lines), True
+    if not add:
+        return text, False
+    indent = "  " * len(path)
+    if opened is not None or not path:
+        at = opened + 1 if path else next(
+            (i + 1 for i, l in enumerate(lines)
+             if re.match(r"^set[ \t]+Analysis", l)), 0)
+        lines.insert(at, f"{indent}set {name} = {value}")
+        return "\n".join(lines), False
+    block = [f"{'  ' * k}subsection {p}" for k, p in enumerate(path)] + \
+        [f"{indent}set {name} = {value}"] + \
+        [f"{'  ' * k}end" for k in reversed(range(len(path)))]
+    return "\n".join(lines + block) + "\n", False
+
+
+def get_in(text, path, name):
+    """The value of `set NAME' inside PATH (None if absent)."""
+    stack = []
+    for line in text.split("\n"):
+        m = re.match(r"^\s*subsection\s+(.*?)\s*$", line)
+        if m:
+            stack.append(m.group(1))
+            continue
+        if re.match(r"^\s*end\s*$", line):
+            stack and stack.pop()
+            continue
+        m = re.match(r"^\s*set\s+" + re.escape(name) + r"\s*=\s*([^#]*)",
+                     line)
+        if m and stack == path:
+            return m.group(1).strip()
+    return None
+
+
+def make_sweep_prm(f_b, f_m, directory, quick, model):
+    """The single-leaf wallette for one (f_b, f_m) pair (see the module
+    documentation); returns (name, prm, out)."""
+    source = os.path.join(root, "prm", "examples",
+                          "wallette-single-cyclic.prm")
+    text = open(source).read()
+    name = f"sweep-fb{f_b:g}-fm{f_m:g}"
+    out = os.path.join(directory, name)
+    text = set_entry(text, "Output directory", out, "top")
+    x = sweep_inputs(f_b, f_m)
+    h_b = float(get_in(text, ["Wallette"], "Brick height") or 0.065)
+    h_m = float(get_in(text, ["Wallette"], "Joint thickness") or 0.01)
+    target = sweep_target(x["f_b"], x["E_m"], h_b, h_m)
+    step = SWEEP_QUICK_STEP if quick else SWEEP_STEP
+    settings = dict(SWEEP_QUICK if quick else SWEEP,
+                    **{"Target strain": f"{target:.4g}",
+                       "Number of steps": str(math.ceil(target / step))})
+    for key, value in settings.items():
+        text, _ = set_in(text, ["Wallette"], key, value)
+    if model != "simplified":
+        text, _ = set_in(text, ["Wallette"], MODEL_ENTRY, model)
+    brick = ["Brick material", "Damage plasticity"]
+    for key, value in (("Compressive strength", x["f_b"]),
+                       ("Tensile strength", x["f_bt"]),
+                       ("Young's modulus", x["E_b"]),
+                       ("Poisson's ratio", x["nu_b"])):
+        text, _ = set_in(text, brick, key, f"{value:.6g}")
+    law = (get_in(text, ["Interface law"], "Law") or "bilinear").strip()
+    used = ["E_b", "f_b", "f_bt"]
+    if law == "composite":
+        comp = ["Interface law", "Composite"]
+        for key, value in (("Unit Young's modulus", x["E_b"]),
+                           ("Unit Poisson's ratio", x["nu_b"]),
+                           ("Mortar Young's modulus", x["E_m"]),
+                           ("Mortar Poisson's ratio", x["nu_m"]),
+                           ("Joint thickness", h_m)):
+            text, _ = set_in(text, comp, key, f"{value:.6g}")
+        used.append("E_m (penalties by the law)")
+    else:
+        k_n, k_s = joint_penalties(x["E_b"], x["E_m"], x["nu_b"], x["nu_m"],
+                                   h_m)
+        text, _ = set_in(text, ["Interface law"], "Normal stiffness",
+                         f"{k_n:.6g}")
+        text, _ = set_in(text, ["Interface law"], "Shear stiffness",
+                         f"{k_s:.6g}")
+        used.append(f"E_m (k_n = {k_n:.3g}, k_s = {k_s:.3g} Pa/m)")
+    # a mortar strength entry, wherever the model has one
+    found = False
+    for path in (["Interface law", "Composite"], ["Mortar material"],
+                 ["Mortar material", "Mortar"],
+                 ["Mortar material", "Damage plasticity"], ["Wallette"]):
+        for key in ("Mortar compressive strength", "Compressive strength"):
+            if key == "Compressive strength" and "Mortar" not in path[0]:
+                continue
+            text, hit = set_in(text, path, key, f"{x['f_m']:.6g}", add=False)
+            found = found or hit
+    if found:
+        used.append("f_m (mortar strength entry)")
+    header = (f"# Study sweep pair {name}: {os.path.relpath(source, root)}, "
+              f"monotonic to strain {target:.4g}, f_b = {f_b:g} MPa, f_m = {f_m:g} MPa, "
+              f"E_b = {x['E_b']:.4g} Pa, f_bt = {x['f_bt']:.4g} Pa, "
+              f"E_m = {x['E_m']:.4g} Pa (200 f_m), model {model}"
+              f"{' (--quick)' if quick else ''}, written by contrib/study/run."
+              f"\n# inputs the model uses: {', '.join(used)}"
+              f"{'' if found else '; no mortar strength entry (f_m enters through E_m only)'}\n")
+    prm = os.path.join(directory, name + ".prm")
+    with open(prm, "w") as f:
+        f.write(header + text)
+    return name, prm, out
+
 
 def set_entry(text, name, value, where):
     """Replace the value of `set NAME = ...' (the first such line) keeping
@@ -52,7 +234,7 @@ def set_entry(text, name, value, where):
     return text[:m.end()] + f"\n{indent}set {name} = {value}" + text[m.end():]
 
 
-def make_prm(thickness, seed, directory, quick):
+def make_prm(thickness, seed, directory, quick, model="simplified"):
     source = os.path.join(root, "prm", "examples",
                           f"wallette-{thickness}-cyclic.prm")
     with open(source) as f:
@@ -66,8 +248,22 @@ def make_prm(thickness, seed, directory, quick):
             text = set_entry(text, key, value, "wallette")
         text = set_entry(text, "Elements along the length",
                          QUICK_LENGTH[thickness], "wallette")
+    if model != "simplified":
+        text, _ = set_in(text, ["Wallette"], MODEL_ENTRY, model)
+    # failure.png of every specimen (doc/brickwork.md, `failure plot')
+    listed = get_in(text, ["Postprocess", "Wallette"],
+                    "List of postprocessors") or \
+        "curve tables, fields, joint fields, curve plot"
+    if "failure plot" not in listed:
+        listed += ", failure plot"
+    text, _ = set_in(text, ["Postprocess", "Wallette"],
+                     "List of postprocessors", listed)
+    for key, value in FAILURE_PLOT.items():
+        text, _ = set_in(text, ["Postprocess", "Wallette", "Failure plot"],
+                         key, value)
     header = (f"# Study specimen {name}: {os.path.relpath(source, root)} "
-              f"with Random seed = {seed}{' (--quick)' if quick else ''}, "
+              f"with Random seed = {seed}, model {model}"
+              f"{' (--quick)' if quick else ''}, "
               "written by contrib/study/run.\n")
     prm = os.path.join(directory, name + ".prm")
     with open(prm, "w") as f:
@@ -110,6 +306,9 @@ def main():
     p.add_argument("--output", default="")
     p.add_argument("--thickness", default=",".join(THICKNESSES))
     p.add_argument("--seeds", default="1,2,3")
+    p.add_argument("--part", default="specimens,sweep")
+    p.add_argument("--model", default="simplified",
+                   choices=("simplified", "detailed"))
     p.add_argument("--report-only", action="store_true")
     p.add_argument("--no-setup", action="store_true")
     args = p.parse_args()
@@ -121,6 +320,11 @@ def main():
             raise SystemExit(f"study: error: unknown thickness `{t}' "
                              f"(one of {', '.join(THICKNESSES)})")
     seeds = [int(s) for s in args.seeds.split(",") if s]
+    parts = [x for x in args.part.split(",") if x]
+    for x in parts:
+        if x not in ("specimens", "sweep"):
+            raise SystemExit(f"study: error: unknown part `{x}' (specimens, "
+                             "sweep)")
     directory = os.path.abspath(
         args.output or ("output/study-quick" if args.quick else "output/study"))
     os.makedirs(directory, exist_ok=True)
@@ -129,10 +333,17 @@ def main():
     if args.report_only:
         return report.main([directory])
 
-    runs = [make_prm(t, s, directory, args.quick)
-            for t in thicknesses for s in seeds]
+    runs = []
+    if "specimens" in parts:
+        runs += [make_prm(t, s, directory, args.quick, args.model)
+                 for t in thicknesses for s in seeds]
+    if "sweep" in parts:
+        runs += [make_sweep_prm(f_b, f_m, directory, args.quick, args.model)
+                 for f_b in SWEEP_FB for f_m in SWEEP_FM]
     print(f"study: {len(runs)} runs, {min(args.jobs, len(runs))} at a time"
-          f"{' (quick)' if args.quick else ''}, in {directory}/", flush=True)
+          f"{' (quick)' if args.quick else ''}, model {args.model}, in "
+          f"{directory}/", flush=True)
+    cpu_total = 0.0
     waiting = list(runs)
     running = {}
     failed = []
@@ -151,11 +362,17 @@ def main():
         time.sleep(1)
         for name in list(running):
             proc, out, log, t0 = running[name]
-            code = proc.poll()
-            if code is None:
+            pid, status, usage = os.wait4(proc.pid, os.WNOHANG)
+            if pid == 0:
                 continue
+            code = os.waitstatus_to_exitcode(status)
+            proc.returncode = code
             del running[name]
             seconds = time.time() - t0
+            cpu = usage.ru_utime + usage.ru_stime
+            cpu_total += cpu
+            with open(os.path.join(directory, name + ".cpu"), "w") as f:
+                f.write(f"{cpu:.2f}\n")
             summary = {}
             try:
                 with open(os.path.join(out, "summary.json")) as f:
@@ -164,7 +381,8 @@ def main():
                 pass
             status = summary.get("status", "no summary.json")
             if code == 0 and status == "completed":
-                print(f"study: finished {name} in {seconds:.0f} s: peak "
+                print(f"study: finished {name} in {seconds:.0f} s "
+                      f"({cpu:.0f} CPU s): peak "
                       f"{summary['peak_stress'] / 1e6:.2f} MPa at strain "
                       f"{summary['strain_at_peak']:.5f}, "
                       f"{len(summary.get('cycles', []))} cycles, "
@@ -190,7 +408,8 @@ def main():
                     parts.append(f"{name} starting")
             print(f"study: {time.time() - start:.0f} s, "
                   f"{len(waiting)} waiting; " + "; ".join(parts), flush=True)
-    print(f"study: all runs done in {time.time() - start:.0f} s", flush=True)
+    print(f"study: all runs done in {time.time() - start:.0f} s, "
+          f"{cpu_total:.0f} CPU s (user + sys)", flush=True)
     code = report.main([directory])
     if failed:
         print(f"study: error: {len(failed)} of {len(runs)} runs failed: "

@@ -676,8 +676,10 @@ namespace masonry
           return tc / (1 - share) - T;
         };
         double a = 0, b = 1 / a_d, fa = excess(a), fb = excess(b);
-        double lambda = b;
-        if (fb < 0 && fa > 0) // else: as far as the flow goes
+        // on (or by round-off inside) the threshold already: no flow; the
+        // threshold out of reach along the flow: as far as it goes
+        double lambda = fa <= 0 ? 0. : b;
+        if (fa > 0 && fb < 0)
           for (unsigned int it = 0, side = 2; it < 100; ++it)
             {
               lambda         = (a * fb - b * fa) / (fb - fa);
