@@ -86,11 +86,22 @@ namespace masonry
                         "direction, as a fraction of the patch's parameter "
                         "range (dimensionless); must be below 1/n for n "
                         "blocks along that direction.");
+      prm.declare_entry(
+        "Reuse evaluations",
+        "true",
+        dealii::Patterns::Bool(),
+        "Whether the adaptation reuses work: the fitness of a gene vector "
+        "evaluated before is looked up (an evaluation is deterministic), and "
+        "a `minimum thickness' evaluation computes the blocks once and "
+        "rescales them for every thickness factor. false: every evaluation "
+        "and every factor from scratch, for checks and timing (the same "
+        "result, bit for bit). Unitless flag.");
     }
 
     void
     Optimiser::parse_common_parameters(dealii::ParameterHandler &prm)
     {
+      reuse_evaluations  = prm.get_bool("Reuse evaluations");
       population_size    = prm.get_integer("Population size");
       generations        = prm.get_integer("Generations");
       seed               = prm.get_integer("Seed");

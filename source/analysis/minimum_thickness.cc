@@ -147,6 +147,12 @@ namespace masonry
       std::string
       bisect(RunContext &context, double &lo, double &hi, unsigned int &steps)
       {
+        // no basis from an earlier bisection (another mesh of the
+        // adaptation): near the minimum the starting basis can decide
+        // "stands" at the LP tolerances, and the result must depend on the
+        // mesh only (the adaptation looks up repeated meshes, and the best
+        // mesh is analysed again)
+        warm       = lp::WarmStart();
         auto check = [&](const double s) {
           ++steps;
           const bool ok = stands(s, context);
@@ -195,7 +201,11 @@ namespace masonry
       assemble(const double s)
       {
         geometry->set_thickness_factor(s);
-        build_model();
+        // only the thickness changes between the bisection's models
+        if (reuse_evaluations())
+          update_thickness();
+        else
+          build_model();
         const auto start = std::chrono::steady_clock::now();
         last_force_scale = dead_load_magnitude();
         last_problem     = std::make_unique<rigid_blocks::MechanismProblem>(

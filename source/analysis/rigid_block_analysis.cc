@@ -20,9 +20,22 @@
 #include <mutex>
 #include <sstream>
 #include <thread>
+#include <time.h>
 
 namespace masonry
 {
+  namespace
+  {
+    /** CPU time of the calling thread, s. */
+    double
+    thread_cpu_seconds()
+    {
+      timespec t;
+      clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+      return t.tv_sec + 1e-9 * t.tv_nsec;
+    }
+  } // namespace
+
   namespace analysis
   {
     std::set<std::string>
@@ -401,17 +414,18 @@ namespace masonry
         {
           analyses[t]->quiet = true;
           fitness.emplace_back([&, t](const std::vector<double> &genes) {
-            {
-              std::lock_guard<std::mutex> lock(evaluated_mutex);
-              const auto                  known = evaluated.find(genes);
-              if (known != evaluated.end())
-                {
-                  ++n_repeated;
-                  if (known->second.second)
-                    ++failed[t];
-                  return known->second.first;
-                }
-            }
+            if (reuse_evaluations())
+              {
+                std::lock_guard<std::mutex> lock(evaluated_mutex);
+                const auto                  known = evaluated.find(genes);
+                if (known != evaluated.end())
+                  {
+                    ++n_repeated;
+                    if (known->second.second)
+                      ++failed[t];
+                    return known->second.first;
+                  }
+              }
             RigidBlockAnalysis &a = *analyses[t];
             double              f = -std::numeric_limits<double>::infinity();
             bool                failure = true;
@@ -483,6 +497,7 @@ namespace masonry
         n_failed += f;
       mesh_vertices    = vertices_from_genes(result.best_genes);
       seconds_geometry = seconds_assembly = seconds_solve = 0;
+      cpu_seconds_solve                                   = 0;
       // the other threads' copies are not needed for the final analysis
       const unsigned int n_threads = analyses.size();
       workers.clear();
@@ -527,12 +542,41 @@ namespace masonry
     void
     RigidBlockAnalysis::build_model()
     {
-      const auto start   = std::chrono::steady_clock::now();
-      model              = mesh_vertices.empty() ?
-                             std::make_unique<rigid_blocks::BlockModel>(*geometry, options) :
-                             std::make_unique<rigid_blocks::BlockModel>(*geometry,
+      const auto start = std::chrono::steady_clock::now();
+      model            = mesh_vertices.empty() ?
+                           std::make_unique<rigid_blocks::BlockModel>(*geometry, options) :
+                           std::make_unique<rigid_blocks::BlockModel>(*geometry,
                                                            options,
                                                            mesh_vertices);
+      model_vertices   = mesh_vertices;
+      compute_dead_loads();
+      seconds_geometry +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+          .count();
+    }
+
+    void
+    RigidBlockAnalysis::update_thickness()
+    {
+      if (!model || model_vertices != mesh_vertices)
+        return build_model();
+      const auto start = std::chrono::steady_clock::now();
+      model->update_thickness();
+      compute_dead_loads();
+      seconds_geometry +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+          .count();
+    }
+
+    bool
+    RigidBlockAnalysis::reuse_evaluations() const
+    {
+      return !optimiser || optimiser->reuse_evaluations;
+    }
+
+    void
+    RigidBlockAnalysis::compute_dead_loads()
+    {
       const auto &blocks = model->blocks();
       dead_force.assign(blocks.size(), dealii::Tensor<1, 3>());
       dead_moment.assign(blocks.size(), dealii::Tensor<1, 3>());
@@ -542,9 +586,6 @@ namespace masonry
                                            dead_moment);
       for (unsigned int b = 0; b < blocks.size(); ++b)
         dead_force[b][2] -= blocks[b].weight;
-      seconds_geometry +=
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
-          .count();
     }
 
     double
@@ -576,12 +617,14 @@ namespace masonry
                << " M non-zeros: this may take minutes\n";
           context.pcout << line.str();
         }
-      const auto         start = std::chrono::steady_clock::now();
+      const auto         start     = std::chrono::steady_clock::now();
+      const double       cpu_start = thread_cpu_seconds();
       const lp::Solution solution =
         warm ? solver->solve_warm(lp, *warm) : solver->solve(lp);
       seconds_solve +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
           .count();
+      cpu_seconds_solve += thread_cpu_seconds() - cpu_start;
       ++n_solves;
       n_iterations += solution.iterations;
       AssertThrow(solution.status != lp::Status::failed,
@@ -612,20 +655,21 @@ namespace masonry
                                const lp::Solution      &solution,
                                RunContext              &context) const
     {
-      Json &summary               = context.summary;
-      summary["n_blocks"]         = model->blocks().size();
-      summary["n_interfaces"]     = model->interfaces().size();
-      summary["n_contact_points"] = model->n_contact_points();
-      summary["interface_model"]  = joints_name;
-      summary["lp_rows"]          = lp.n_rows();
-      summary["lp_columns"]       = lp.n_columns();
-      summary["lp_nonzeros"]      = lp.n_nonzeros();
-      summary["lp_solver"]        = solver_name;
-      summary["lp_solves"]        = n_solves;
-      summary["lp_iterations"]    = n_iterations;
-      summary["seconds_geometry"] = seconds_geometry;
-      summary["seconds_assembly"] = seconds_assembly;
-      summary["seconds_solve"]    = seconds_solve;
+      Json &summary                = context.summary;
+      summary["n_blocks"]          = model->blocks().size();
+      summary["n_interfaces"]      = model->interfaces().size();
+      summary["n_contact_points"]  = model->n_contact_points();
+      summary["interface_model"]   = joints_name;
+      summary["lp_rows"]           = lp.n_rows();
+      summary["lp_columns"]        = lp.n_columns();
+      summary["lp_nonzeros"]       = lp.n_nonzeros();
+      summary["lp_solver"]         = solver_name;
+      summary["lp_solves"]         = n_solves;
+      summary["lp_iterations"]     = n_iterations;
+      summary["seconds_geometry"]  = seconds_geometry;
+      summary["seconds_assembly"]  = seconds_assembly;
+      summary["seconds_solve"]     = seconds_solve;
+      summary["cpu_seconds_solve"] = cpu_seconds_solve;
       if (solution.status == lp::Status::optimal)
         summary["lp_max_violation"] = check_solution(lp, solution, context);
     }

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <dlfcn.h>
 #include <filesystem>
 #include <fstream>
@@ -325,8 +326,9 @@ namespace masonry
     int
     run_file(const std::string &file, const MPI_Comm comm, const bool defaults)
     {
-      const auto start = std::chrono::steady_clock::now();
-      const auto file_start =
+      const auto         start     = std::chrono::steady_clock::now();
+      const std::clock_t cpu_start = std::clock();
+      const auto         file_start =
         std::filesystem::file_time_type::clock::now() - std::chrono::seconds(2);
       const bool root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
 
@@ -366,6 +368,7 @@ namespace masonry
       summary["status"]          = "running";
       summary["complete"]        = false;
       summary["wall_seconds"]    = 0.0;
+      summary["cpu_seconds"]     = 0.0;
       summary["masonry_version"] = MASONRY_VERSION;
       summary["n_mpi_ranks"]    = dealii::Utilities::MPI::n_mpi_processes(comm);
       summary["parameter_file"] = file;
@@ -375,6 +378,8 @@ namespace masonry
         summary["wall_seconds"] = std::chrono::duration<double>(
                                     std::chrono::steady_clock::now() - start)
                                     .count();
+        summary["cpu_seconds"] =
+          double(std::clock() - cpu_start) / CLOCKS_PER_SEC;
         return write_summary_file(summary, output, comm);
       };
 

@@ -79,6 +79,12 @@ namespace masonry
     double
     Interface::thickness(const dealii::Point<3> &x) const
     {
+      return factor * unscaled_thickness(x);
+    }
+
+    double
+    Interface::unscaled_thickness(const dealii::Point<3> &x) const
+    {
       AssertThrow(thickness_function,
                   dealii::ExcMessage("geometry::Interface::thickness() called "
                                      "before parse_common_parameters()."));
@@ -91,7 +97,7 @@ namespace masonry
                 << " m at the point (" << x << "); it must be positive.";
           AssertThrow(false, ExcParameter("Thickness", where.str()));
         }
-      return factor * t;
+      return t;
     }
 
     void

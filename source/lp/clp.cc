@@ -72,6 +72,19 @@ namespace masonry
         return true;
       }
 
+      /** Whether x = 0 satisfies every row and column bound of @p lp. */
+      bool
+      zero_is_feasible(const LinearProgram &lp)
+      {
+        for (unsigned int j = 0; j < lp.n_columns(); ++j)
+          if (lp.column_lower()[j] > 0 || lp.column_upper()[j] < 0)
+            return false;
+        for (unsigned int i = 0; i < lp.n_rows(); ++i)
+          if (lp.row_lower()[i] > 0 || lp.row_upper()[i] < 0)
+            return false;
+        return true;
+      }
+
       /**
        * Clp's dual of @p model (ClpSimplexOther::dualOfModel), or nullptr
        * if Clp declines. That function prints one line to the C stdout
@@ -214,8 +227,10 @@ namespace masonry
         "(Mohr-Coulomb joints: the plastic multipliers), else (no tension "
         "no sliding) by the primal simplex, maps the vertex back and "
         "confirms it with the primal simplex. A dual LP that the simplex "
-        "proves infeasible makes the LP unbounded or infeasible (decided by "
-        "a feasibility solve); anything else not proven optimal is solved "
+        "proves infeasible (after the barrier: the primal simplex from the "
+        "barrier's last point) makes the LP unbounded or infeasible "
+        "(unbounded if x = 0 satisfies every bound, else decided by a "
+        "feasibility solve); anything else not proven optimal is solved "
         "directly by the same method. The choice comes from the "
         "measurements in contrib/benchmarks/lp_solvers. Unitless choice.");
       prm.declare_entry("Presolve",
@@ -316,6 +331,16 @@ namespace masonry
           // and it is slower from 6 x 8 Bothwell blocks up
           run(*dual, method, false);
           iterations += dual->numberIterations();
+          if (method == "barrier" && dual->isProvenPrimalInfeasible())
+            {
+              // the barrier's infeasibility verdict is not reliable: the
+              // primal simplex from its last point confirms it (or finds
+              // the optimum), cheaper than solving the LP itself again
+              dual->primal(1);
+              iterations += dual->numberIterations();
+              if (dual->isProvenPrimalInfeasible())
+                return DualRoute::dual_infeasible;
+            }
           if (!dual->isProvenOptimal())
             // a simplex's infeasibility verdict on the dual LP is
             // reliable (the barrier's is not: it may stop on numerical
@@ -481,14 +506,19 @@ namespace masonry
         }
       else if (dual_infeasible || model->isProvenDualInfeasible())
         {
-          // dual infeasible: unbounded if primal feasible, which a solve
-          // with zero objective decides
-          std::unique_ptr<ClpSimplex> feasibility = create(lp);
-          for (unsigned int j = 0; j < lp.n_columns(); ++j)
-            feasibility->setObjectiveCoefficient(j, 0.);
-          feasibility->primal();
-          solution.iterations += feasibility->numberIterations();
-          if (feasibility->isProvenOptimal())
+          // dual infeasible: unbounded if primal feasible, which x = 0
+          // shows when every bound allows it (a mechanism LP with fixed
+          // supports), else a solve with zero objective decides
+          std::unique_ptr<ClpSimplex> feasibility;
+          if (!zero_is_feasible(lp))
+            {
+              feasibility = create(lp);
+              for (unsigned int j = 0; j < lp.n_columns(); ++j)
+                feasibility->setObjectiveCoefficient(j, 0.);
+              feasibility->primal();
+              solution.iterations += feasibility->numberIterations();
+            }
+          if (!feasibility || feasibility->isProvenOptimal())
             {
               solution.status  = Status::unbounded;
               solution.message = "Clp: unbounded (dual infeasible)";

@@ -272,6 +272,8 @@ namespace masonry
       std::vector<InnerFace>    inner_faces;
       block_list.clear();
       interface_list.clear();
+      block_samples.clear();
+      interface_stations.clear();
       for (unsigned int p = 0; p < patches.size(); ++p)
         add_patch_blocks(p, boundary_faces, inner_faces);
 
@@ -286,9 +288,7 @@ namespace masonry
                                  std::vector<BoundaryFace> &boundary_faces,
                                  std::vector<InnerFace>    &inner_faces)
     {
-      const auto  &patches       = geom.patches();
-      const double zeta_gauss[2] = {-0.5 / std::sqrt(3.), 0.5 / std::sqrt(3.)};
-      const double rho_g         = geom.density() * gravity;
+      const auto              &patches = geom.patches();
       dealii::Triangulation<2> mesh;
       dealii::GridGenerator::subdivided_hyper_rectangle(mesh,
                                                         {options.n_u,
@@ -313,38 +313,21 @@ namespace masonry
           for (unsigned int v = 0; v < 4; ++v)
             block.corners[v] = cell->vertex(v);
           block_list.push_back(block);
-          double               volume = 0;
-          dealii::Tensor<1, 3> first_moment;
+          std::vector<SurfaceSample> samples;
           for (const auto &[uv, w] : quadrature(block_list.size() - 1))
             {
-              const dealii::Point<3> s  = patches[p].point(uv);
-              const auto             ts = patches[p].tangents(uv);
-              const auto             n  = patches[p].normal(uv);
-              const auto             dn = normal_derivatives(patches[p], uv);
-              const double           t  = geom.thickness(s);
-              for (const double zeta : zeta_gauss)
-                {
-                  // det[x_u, x_v, x_zeta] with x = s + zeta t n; the
-                  // zeta t_u n terms are parallel to x_zeta and drop
-                  const double jac = std::abs(
-                    t *
-                    (n * dealii::cross_product_3d(ts[0] + zeta * t * dn[0],
-                                                  ts[1] + zeta * t * dn[1])));
-                  const dealii::Point<3> x = s + zeta * t * n;
-                  volume += 0.5 * w * jac;
-                  first_moment += 0.5 * w * jac * x;
-                }
+              SurfaceSample sample;
+              sample.uv                 = uv;
+              sample.weight             = w;
+              sample.point              = patches[p].point(uv);
+              sample.tangents           = patches[p].tangents(uv);
+              sample.normal             = patches[p].normal(uv);
+              sample.normal_derivatives = normal_derivatives(patches[p], uv);
+              sample.unscaled_thickness = geom.unscaled_thickness(sample.point);
+              samples.push_back(sample);
             }
-          block_list.pop_back();
-          AssertThrow(volume > 0 && std::isfinite(volume),
-                      dealii::ExcMessage(
-                        "block " + std::to_string(block_list.size()) +
-                        " of patch " + std::to_string(p) +
-                        " has no volume: degenerate cell or thickness"));
-          block.volume   = volume;
-          block.centroid = dealii::Point<3>(first_moment / volume);
-          block.weight   = rho_g * volume;
-          block_list.push_back(block);
+          block_samples.push_back(std::move(samples));
+          compute_mass(block_list.size() - 1);
         }
 
       for (const auto &cell : mesh.active_cell_iterators())
@@ -377,6 +360,94 @@ namespace masonry
     }
 
     void
+    BlockModel::compute_mass(const unsigned int b)
+    {
+      const double zeta_gauss[2] = {-0.5 / std::sqrt(3.), 0.5 / std::sqrt(3.)};
+      const double rho_g         = geom.density() * gravity;
+      const double factor        = geom.thickness_factor();
+      double       volume        = 0;
+      dealii::Tensor<1, 3> first_moment;
+      for (const auto &sample : block_samples[b])
+        {
+          const double w  = sample.weight;
+          const auto  &s  = sample.point;
+          const auto  &ts = sample.tangents;
+          const auto  &n  = sample.normal;
+          const auto  &dn = sample.normal_derivatives;
+          // exactly geometry::Interface::thickness(s)
+          const double t = factor * sample.unscaled_thickness;
+          for (const double zeta : zeta_gauss)
+            {
+              // det[x_u, x_v, x_zeta] with x = s + zeta t n; the
+              // zeta t_u n terms are parallel to x_zeta and drop
+              const double jac = std::abs(
+                t * (n * dealii::cross_product_3d(ts[0] + zeta * t * dn[0],
+                                                  ts[1] + zeta * t * dn[1])));
+              const dealii::Point<3> x = s + zeta * t * n;
+              volume += 0.5 * w * jac;
+              first_moment += 0.5 * w * jac * x;
+            }
+        }
+      Block &block = block_list[b];
+      AssertThrow(volume > 0 && std::isfinite(volume),
+                  dealii::ExcMessage(
+                    "block " + std::to_string(b) + " of patch " +
+                    std::to_string(block.patch) +
+                    " has no volume: degenerate cell or thickness"));
+      block.volume   = volume;
+      block.centroid = dealii::Point<3>(first_moment / volume);
+      block.weight   = rho_g * volume;
+    }
+
+    const std::vector<SurfaceSample> &
+    BlockModel::surface_samples(const unsigned int b) const
+    {
+      return block_samples[b];
+    }
+
+    void
+    BlockModel::update_thickness()
+    {
+      for (unsigned int b = 0; b < block_list.size(); ++b)
+        compute_mass(b);
+      for (unsigned int i = 0; i < interface_list.size(); ++i)
+        compute_contact_points(interface_list[i], interface_stations[i]);
+    }
+
+    void
+    BlockModel::compute_contact_points(
+      Interface                  &interface,
+      const std::vector<Station> &stations) const
+    {
+      const double factor = geom.thickness_factor();
+      interface.points.clear();
+      interface.area = 0;
+      dealii::Tensor<1, 3> centre;
+      for (const auto &station : stations)
+        {
+          // exactly geometry::Interface::thickness(x)
+          const double t = factor * station.unscaled_thickness;
+          for (const bool intrados : {true, false})
+            {
+              ContactPoint c;
+              c.position =
+                station.x + (intrados ? -0.5 : 0.5) * t * station.across;
+              c.normal = station.normal;
+              c.across = station.across;
+              c.along =
+                dealii::cross_product_3d(station.normal, station.across);
+              c.area     = 0.5 * t * station.weight;
+              c.intrados = intrados;
+              interface.points.push_back(c);
+              interface.area += c.area;
+              centre += c.area * c.position;
+            }
+        }
+      if (interface.area > 0)
+        interface.centre = dealii::Point<3>(centre / interface.area);
+    }
+
+    void
     BlockModel::add_interface(const unsigned int                     p,
                               const std::array<dealii::Point<2>, 2> &uv,
                               const dealii::Point<2>                &outward,
@@ -386,10 +457,9 @@ namespace masonry
       Interface interface;
       interface.first              = first;
       interface.second             = second;
-      interface.area               = 0;
       const unsigned int     n     = options.n_stations;
       const geometry::Patch &patch = geom.patches()[p];
-      dealii::Tensor<1, 3>   centre;
+      std::vector<Station>   stations;
       for (unsigned int k = 0; k < n; ++k)
         {
           const double               s  = double(k) / (n - 1);
@@ -397,7 +467,7 @@ namespace masonry
           const dealii::Point<3>     x  = patch.point(q);
           const auto                 ts = patch.tangents(q);
           const auto                 ns = patch.normal(q);
-          const double               t  = geom.thickness(x);
+          const double               t0 = geom.unscaled_thickness(x);
           const dealii::Tensor<1, 3> edge =
             ts[0] * (uv[1][0] - uv[0][0]) + ts[1] * (uv[1][1] - uv[0][1]);
           dealii::Tensor<1, 3> normal = dealii::cross_product_3d(edge, ns);
@@ -412,24 +482,13 @@ namespace masonry
           // trapezoidal weight of the station along the edge
           const double weight =
             edge.norm() / (n - 1) * ((k == 0 || k == n - 1) ? 0.5 : 1.0);
-          for (const bool intrados : {true, false})
-            {
-              ContactPoint c;
-              c.position = x + (intrados ? -0.5 : 0.5) * t * ns;
-              c.normal   = normal;
-              c.across   = ns;
-              c.along    = dealii::cross_product_3d(normal, ns);
-              c.area     = 0.5 * t * weight;
-              c.intrados = intrados;
-              interface.points.push_back(c);
-              interface.area += c.area;
-              centre += c.area * c.position;
-            }
+          stations.push_back({x, normal, ns, weight, t0});
         }
+      compute_contact_points(interface, stations);
       if (interface.area > 0)
         {
-          interface.centre = dealii::Point<3>(centre / interface.area);
           interface_list.push_back(interface);
+          interface_stations.push_back(std::move(stations));
         }
     }
 

@@ -26,19 +26,18 @@ namespace masonry
                            std::vector<dealii::Tensor<1, 3>> &force,
                            std::vector<dealii::Tensor<1, 3>> &moment)
     {
-      const auto &patches = model.geometry().patches();
       for (unsigned int b = 0; b < model.blocks().size(); ++b)
         {
           const Block &block = model.blocks()[b];
-          for (const auto &[uv, w] : model.quadrature(b))
+          for (const auto &sample : model.surface_samples(b))
             {
-              const auto   ts = patches[block.patch].tangents(uv);
-              const double dA =
-                dealii::cross_product_3d(ts[0], ts[1]).norm() * w;
-              const dealii::Point<3> x    = patches[block.patch].point(uv);
-              const double           load = q.value(x);
+              const dealii::Point<3> &x    = sample.point;
+              const double            load = q.value(x);
               if (load == 0)
                 continue;
+              const auto  &ts = sample.tangents;
+              const double dA =
+                dealii::cross_product_3d(ts[0], ts[1]).norm() * sample.weight;
               dealii::Tensor<1, 3> f;
               f[2] = -load * dA;
               force[b] += f;

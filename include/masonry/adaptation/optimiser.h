@@ -88,6 +88,9 @@ namespace masonry
       bool vertex_genes = false;
       /** Smallest block size, as a fraction of the parameter range. */
       double minimum_block_size = 0.02;
+      /** `Reuse evaluations`: fitness look-up of repeated gene vectors and
+       * warm starts between evaluations. */
+      bool reuse_evaluations = true;
     };
   } // namespace adaptation
 } // namespace masonry

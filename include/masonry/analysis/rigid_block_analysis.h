@@ -119,6 +119,27 @@ namespace masonry
       void
       build_model();
 
+      /**
+       * After geometry->set_thickness_factor(): the blocks, interfaces and
+       * dead loads of the current model at the new thickness, from the
+       * middle-surface samples the model kept
+       * (rigid_blocks::BlockModel::update_thickness(); the same numbers as
+       * build_model(), without evaluating the NURBS patches again).
+       * build_model() if there is no model yet.
+       */
+      void
+      update_thickness();
+
+      /** `Adaptation/Reuse evaluations' (true without an optimiser's
+       * parameters). */
+      bool
+      reuse_evaluations() const;
+
+      /** dead_force and dead_moment of the current model: self weight and
+       * `Surface load'. */
+      void
+      compute_dead_loads();
+
       /** Total magnitude of the dead loads (N). */
       double
       dead_load_magnitude() const;
@@ -255,11 +276,17 @@ namespace masonry
       std::string joints_name;
       /** The blocks. */
       std::unique_ptr<rigid_blocks::BlockModel> model;
+      /** mesh_vertices when @p model was built (update_thickness() builds
+       * a new model if the mesh has changed since). */
+      std::vector<std::vector<dealii::Point<2>>> model_vertices;
       /** Dead loads on every block: force (N) and moment about the
        * centroid (N·m), self weight included. */
       std::vector<dealii::Tensor<1, 3>> dead_force, dead_moment;
       /** Seconds spent in build_model(), assembly and solve(). */
       double seconds_geometry = 0, seconds_assembly = 0, seconds_solve = 0;
+      /** CPU seconds of the solving thread in solve() (unlike seconds_solve,
+       * not inflated by other processes on a shared machine). */
+      double cpu_seconds_solve = 0;
       /** Number of LP solves and their iterations. */
       unsigned int n_solves = 0, n_iterations = 0;
     };

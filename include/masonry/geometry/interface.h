@@ -74,6 +74,17 @@ namespace masonry
       thickness(const dealii::Point<3> &x) const;
 
       /**
+       * The thickness (m) at @p x without the factor of
+       * set_thickness_factor(): thickness(x) is exactly
+       * thickness_factor() * unscaled_thickness(x), so a model that keeps
+       * these values can follow a change of the factor without evaluating
+       * the thickness field again (rigid_blocks::BlockModel does). Throws
+       * as thickness().
+       */
+      double
+      unscaled_thickness(const dealii::Point<3> &x) const;
+
+      /**
        * Multiply the thickness everywhere by @p f > 0 (used by the minimum
        * thickness analysis; 1 after parsing).
        */

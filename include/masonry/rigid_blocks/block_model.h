@@ -94,6 +94,31 @@ namespace masonry
     };
 
     /**
+     * What a BlockModel evaluated on the middle surface at one quadrature
+     * point of a block (BlockModel::quadrature()): kept so that neither a
+     * change of the thickness factor (BlockModel::update_thickness()) nor
+     * the integration of surface loads evaluates the NURBS patch again.
+     */
+    struct SurfaceSample
+    {
+      /** Parameters in the patch's unit square. */
+      dealii::Point<2> uv;
+      /** Quadrature weight (parameter area, Jacobian of the cell map
+       * included). */
+      double weight;
+      /** Point of the middle surface, m. */
+      dealii::Point<3> point;
+      /** dx/du and dx/dv, m per unit parameter. */
+      std::array<dealii::Tensor<1, 3>, 2> tangents;
+      /** Unit normal towards the extrados. */
+      dealii::Tensor<1, 3> normal;
+      /** Derivatives of the unit normal along u and v. */
+      std::array<dealii::Tensor<1, 3>, 2> normal_derivatives;
+      /** Thickness without the geometry's thickness factor, m. */
+      double unscaled_thickness;
+    };
+
+    /**
      * Options of the discretisation into blocks.
      */
     struct Discretisation
@@ -178,6 +203,25 @@ namespace masonry
       std::vector<std::pair<dealii::Point<2>, double>>
       quadrature(const unsigned int b) const;
 
+      /**
+       * The surface samples of block @p b at the points of quadrature(b),
+       * in the same order, as evaluated when the model was built.
+       */
+      const std::vector<SurfaceSample> &
+      surface_samples(const unsigned int b) const;
+
+      /**
+       * Recompute what depends on the geometry's thickness factor (block
+       * volumes, centroids and weights; contact points and areas of the
+       * interfaces) after geometry::Interface::set_thickness_factor(), from
+       * the samples of the middle surface kept when the model was built:
+       * no NURBS evaluation, and the same numbers, bit for bit, as a model
+       * built anew with that factor. Blocks, interfaces and their order
+       * do not change.
+       */
+      void
+      update_thickness();
+
       /** A characteristic length of the model (m): the bounding-box size. */
       double
       length_scale() const;
@@ -207,6 +251,23 @@ namespace masonry
                     const dealii::Point<2>                &outward,
                     const unsigned int                     first,
                     const unsigned int                     second);
+      /** What an interface keeps of one station: the middle-surface
+       * point, the interface normal, the shell normal, the trapezoidal
+       * length weight (m) and the unscaled thickness (m). */
+      struct Station
+      {
+        dealii::Point<3>     x;
+        dealii::Tensor<1, 3> normal, across;
+        double               weight, unscaled_thickness;
+      };
+      /** Volume, centroid and weight of block @p b from its samples. */
+      void
+      compute_mass(const unsigned int b);
+      /** Contact points, area and centre of @p interface from its
+       * stations. */
+      void
+      compute_contact_points(Interface                  &interface,
+                             const std::vector<Station> &stations) const;
       /** Boundary faces glued to another patch's face, on a support, or
        * free. */
       void
@@ -217,7 +278,11 @@ namespace masonry
       std::vector<std::vector<dealii::Point<2>>> vertices;
       std::vector<Block>                         block_list;
       std::vector<Interface>                     interface_list;
-      double                                     size;
+      /** Surface samples of every block (see surface_samples()). */
+      std::vector<std::vector<SurfaceSample>> block_samples;
+      /** Stations of every interface, in the order of interface_list. */
+      std::vector<std::vector<Station>> interface_stations;
+      double                            size;
     };
 
     /**

@@ -1,0 +1,105 @@
+/**
+ * `Algorithm = automatic` (Clp's explicit dual by the barrier for
+ * Mohr–Coulomb LPs, by the primal simplex for no tension no sliding, then
+ * the primal simplex on the LP) never returns a worse optimum than an
+ * explicit algorithm (dual simplex, primal simplex, barrier with crossover)
+ * on mechanism LPs of a semicircular arch (mean radius 5 m, thickness 1 m, 16
+ * blocks per half): the settlement of one springing with no tension no sliding
+ * and with Mohr–Coulomb joints (maximised work), and the limit load under a
+ * horizontal acceleration with Mohr–Coulomb joints (minimised multiplier).
+ * "Worse" is measured relative to the explicit algorithm's optimum with a
+ * tolerance of 1e-8; every explicit algorithm must reach the same status.
+ */
+#include <deal.II/base/mpi.h>
+
+#include "vault_tests.h"
+
+using namespace vault_tests;
+
+namespace
+{
+  const std::string mohr_coulomb =
+    "subsection Interface model\n  set Model = mohr coulomb\n"
+    "  subsection Mohr coulomb\n    set Friction coefficient = 0.6\n"
+    "    set Cohesion = 1e4\n    set Tensile strength = 5e3\n  end\nend\n";
+
+  std::string
+  limit_load_prm()
+  {
+    return "set Analysis = limit load\n"
+           "subsection Geometry model\n  set Model name = arch\n"
+           "  set Thickness = 1\n  set Density = 2000\n"
+           "  subsection Arch\n    set Span = 10\n    set Rise = 5\n"
+           "    set Depth = 1\n  end\nend\n"
+           "subsection Limit load\n  set Blocks along u = 16\n"
+           "  set Blocks along v = 1\n  set Stations per edge = 2\n"
+           "  set Supported edges = springing left, springing right\n"
+           "  set Live acceleration = 1; 0; 0\n"
+           "  set Write picture = false\nend\n" +
+           mohr_coulomb;
+  }
+
+  std::string
+  algorithm(const std::string &a)
+  {
+    return "subsection LP solver\n  subsection Clp\n    set Algorithm = " + a +
+           "\n  end\nend\n";
+  }
+
+  /** Run @p prm with every algorithm; @p key is maximised if @p maximise. */
+  void
+  compare(const std::string &name,
+          const std::string &file,
+          const std::string &prm,
+          const std::string &key,
+          const bool         maximise)
+  {
+    const masonry::Json automatic =
+      run(file + "_automatic", prm + algorithm("automatic"));
+    const double best = automatic.at(key).as_number();
+    bool         ok   = automatic.at("status").as_string() == "optimal";
+    for (const std::string a : {"dual simplex", "primal simplex", "barrier"})
+      {
+        const masonry::Json s =
+          run(file + "_" + a.substr(0, a.find(' ')), prm + algorithm(a));
+        if (s.at("status").as_string() != "optimal")
+          {
+            ok = false;
+            std::cout << "  " << a << ": " << s.at("status").as_string()
+                      << "\n";
+            continue;
+          }
+        const double v = s.at(key).as_number();
+        const double worse =
+          (maximise ? v - best : best - v) / std::max(std::abs(v), 1e-300);
+        if (worse > 1e-8)
+          {
+            ok = false;
+            std::cout << "  " << a << ": " << std::setprecision(17) << v
+                      << ", automatic " << best << "\n";
+          }
+      }
+    check(ok,
+          name + ": automatic is optimal and no worse than dual simplex, "
+                 "primal simplex or barrier (1e-8)");
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const std::string settlement = arch_prm(5, 1, 16, "0; 0; -0.01");
+  compare(
+    "settlement, no tension no sliding", "nt", settlement, "objective", true);
+  compare("settlement, Mohr-Coulomb",
+          "mc",
+          settlement + mohr_coulomb,
+          "objective",
+          true);
+  compare("limit load, Mohr-Coulomb",
+          "limit",
+          limit_load_prm(),
+          "load_multiplier",
+          false);
+}
