@@ -21,6 +21,24 @@ namespace masonry
 {
   namespace analysis
   {
+    namespace
+    {
+      /** The mortar of the detailed model: a brick material of its own. */
+      const char *const mortar_section = "Mortar material";
+
+      void
+      declare_mortar_material(dealii::ParameterHandler &prm)
+      {
+        plugins::Registry<brickwork::BrickMaterial>::declare_parameters(
+          prm, mortar_section);
+      }
+
+      [[maybe_unused]] const bool mortar_declared =
+        (plugins::add_subsystem(
+           {mortar_section, "Model", &declare_mortar_material}),
+         true);
+    } // namespace
+
     /**
      * A wallette of enlarged bricks joined by zero-thickness cohesive
      * interfaces, loaded by a top platen moving by a prescribed
@@ -53,8 +71,31 @@ namespace masonry
                           Double(0),
                           "Thickness of the mortar joints, m (>= 0): each "
                           "enlarged brick is the brick plus half a joint on "
-                          "every side, and the joints become zero-thickness "
-                          "interfaces.");
+                          "every side. `Model = simplified': the joints "
+                          "become zero-thickness interfaces; `detailed': the "
+                          "mortar is meshed as one layer of hexahedra of "
+                          "this thickness (> 0 then).");
+        prm.declare_entry(
+          "Model",
+          "simplified",
+          Selection("simplified|detailed"),
+          "`simplified': enlarged bricks (brick plus half a joint all "
+          "round) joined by zero-thickness interfaces that stand for the "
+          "mortar (`Interface law', whose penalties then represent the "
+          "mortar's stiffness, e.g. Lourenco-Rots from E_b, E_m, nu and "
+          "the joint thickness). `detailed': the units at their actual "
+          "size (`Brick length/width/height'), the mortar of bed and head "
+          "joints (and collar joints) meshed as one layer of hexahedra "
+          "`Joint thickness' thick with `subsection Mortar material' (any "
+          "brick material), and the zero-thickness interfaces of the "
+          "`Interface law' between units and mortar as the bond, whose "
+          "penalties should then be stiff contact penalties (the mortar's "
+          "compliance is in its cells); the wallette is one joint "
+          "thickness shorter, thinner and lower than the enlarged one "
+          "(outer faces are unit faces). Cells along the length, width "
+          "and height of a unit are about its size / the enlarged mesh "
+          "spacing; mortar layers are one cell thick. Not with `Mesh "
+          "distortion'.");
         prm.declare_entry("Courses",
                           "5",
                           Integer(1, 1000),
@@ -502,8 +543,17 @@ namespace masonry
         AssertThrow(!cyclic || !s.output.write_calculix,
                     ExcParameter("Write CalculiX input",
                                  "needs the monotonic protocol"));
-        s.mesh.distortion  = prm.get_double("Mesh distortion");
-        s.mesh.split_units = prm.get_bool("Splitting interfaces");
+        s.mesh.distortion       = prm.get_double("Mesh distortion");
+        s.mesh.split_units      = prm.get_bool("Splitting interfaces");
+        s.mesh.detailed         = prm.get("Model") == "detailed";
+        s.mesh.mortar_thickness = joint;
+        AssertThrow(!s.mesh.detailed || joint > 0,
+                    ExcParameter("Joint thickness",
+                                 "must be positive with `Model = detailed' "
+                                 "(the mortar layer's thickness)"));
+        AssertThrow(!s.mesh.detailed || s.mesh.distortion == 0,
+                    ExcParameter("Mesh distortion",
+                                 "is not supported with `Model = detailed'"));
         AssertThrow(!s.mesh.split_units || !s.mesh.bonded,
                     ExcParameter("Splitting interfaces",
                                  "needs `Joints = interfaces'"));
@@ -520,18 +570,32 @@ namespace masonry
       {
         bond     = plugins::Registry<brickwork::Bond>::create(prm);
         material = plugins::Registry<brickwork::BrickMaterial>::create(prm);
-        law      = plugins::Registry<brickwork::InterfaceLaw>::create(prm);
+        if (s.mesh.detailed)
+          {
+            using Materials = plugins::Registry<brickwork::BrickMaterial>;
+            mortar          = Materials::create(prm,
+                                       Materials::selected(prm, mortar_section),
+                                       mortar_section);
+          }
+        law = plugins::Registry<brickwork::InterfaceLaw>::create(prm);
         make_postprocessors(prm);
         // lay the bricks now so that --validate finds a mesh that does not
         // fit the bond
         plugins::ParsePathScope scope("Wallette");
         boxes = bond->layout(s.mesh.size);
-        brickwork::check_mesh(boxes, s.mesh);
+        if (!s.mesh.detailed)
+          brickwork::check_mesh(boxes, s.mesh);
+        // (the detailed model's units are one joint shorter)
         if (s.mesh.split_units)
-          splitting_law = brickwork::make_splitting_law(splitting,
-                                                        *material,
-                                                        s.mesh.size.length);
-        const double H = s.mesh.size.height * s.mesh.size.courses;
+          splitting_law = brickwork::make_splitting_law(
+            splitting,
+            *material,
+            s.mesh.size.length -
+              (s.mesh.detailed ? s.mesh.mortar_thickness : 0.));
+        // the height of the wallette (the detailed one's top course has no
+        // bed joint above it)
+        const double H = s.mesh.size.height * s.mesh.size.courses -
+                         (s.mesh.detailed ? s.mesh.mortar_thickness : 0.);
         s.protocol.target_displacement = target_strain * H;
         s.protocol.cycle_amplitudes.clear();
         if (cyclic)
@@ -562,7 +626,8 @@ namespace masonry
                                 s,
                                 postprocessors,
                                 context,
-                                splitting_law.get());
+                                splitting_law.get(),
+                                mortar.get());
       }
 
     private:
@@ -614,6 +679,8 @@ namespace masonry
       double                                    amplitude_increment = 0;
       std::unique_ptr<brickwork::Bond>          bond;
       std::unique_ptr<brickwork::BrickMaterial> material;
+      /** The mortar's material (`Model = detailed'), else nullptr. */
+      std::unique_ptr<brickwork::BrickMaterial> mortar;
       std::unique_ptr<brickwork::InterfaceLaw>  law;
       brickwork::SplittingSettings              splitting;
       std::unique_ptr<brickwork::InterfaceLaw>  splitting_law;

@@ -29,6 +29,7 @@
 #include "model/linear_solvers.h"
 #include "model/mesh.h"
 #include "model/newton.h"
+#include "model/regions.h"
 #include "model/step_control.h"
 #include "model/system.h"
 #include "model/view.h"
@@ -52,6 +53,7 @@ namespace masonry
                  const BrickMaterial    &material,
                  const InterfaceLaw     &law,
                  const InterfaceLaw     *splitting_law,
+                 const BrickMaterial    *mortar,
                  const WalletteSettings &settings,
                  std::vector<std::unique_ptr<postprocess::Postprocessor>>
                             &postprocessors,
@@ -75,6 +77,9 @@ namespace masonry
                     const unsigned int its,
                     const unsigned int removed,
                     const unsigned int n_legs);
+        /** The detailed model's derived values (none: simplified). */
+        std::vector<DerivedValue>
+        detailed_values() const;
         /** Largest damages of the converged states: joints, bricks. */
         std::pair<double, std::vector<double>>
         max_damages() const;
@@ -100,7 +105,10 @@ namespace masonry
         const BrickMaterial &material;
         const InterfaceLaw  &law;
         /** The splitting interfaces' law, nullptr: none. */
-        const InterfaceLaw                *splitting_law;
+        const InterfaceLaw *splitting_law;
+        /** The mortar's own law (detailed model; `material' then holds
+         * both), nullptr: the simplified model. */
+        const BrickMaterial               *mortar;
         const WalletteSettings            &settings;
         RunContext                        &context;
         ConditionalOStream                &pcout;
@@ -129,6 +137,7 @@ namespace masonry
         const BrickMaterial    &material,
         const InterfaceLaw     &law,
         const InterfaceLaw     *splitting_law,
+        const BrickMaterial    *mortar,
         const WalletteSettings &settings,
         std::vector<std::unique_ptr<postprocess::Postprocessor>>
                    &postprocessors,
@@ -136,6 +145,7 @@ namespace masonry
         : material(material)
         , law(law)
         , splitting_law(splitting_law)
+        , mortar(mortar)
         , settings(settings)
         , context(context)
         , pcout(context.pcout)
@@ -155,10 +165,12 @@ namespace masonry
       void
       Wallette::setup(const std::vector<Box> &boxes)
       {
-        geometry = make_mesh(boxes, settings.mesh, triangulation);
+        geometry = settings.mesh.detailed ?
+                     make_detailed_mesh(boxes, settings.mesh, triangulation) :
+                     make_mesh(boxes, settings.mesh, triangulation);
         system.distribute_dofs();
         const auto spacing = mesh_spacing(settings.mesh);
-        joints = find_joints(system.dof_handler, spacing, geometry.height);
+        joints             = find_joints(system.dof_handler, geometry.height);
         system.setup(joints, geometry, settings.platen);
         specimen = make_specimen(triangulation,
                                  geometry.n_bricks,
@@ -177,6 +189,8 @@ namespace masonry
                     specimen.cell_length[cell->active_cell_index()];
                   point.strength_factor =
                     specimen.cell_factor[cell->active_cell_index()];
+                  point.region =
+                    specimen.cell_region[cell->active_cell_index()];
                   material.check_point(point);
                   for (unsigned int q = 0; q < 8; ++q)
                     owned_bricks.push_back(8 * cell->active_cell_index() + q);
@@ -282,6 +296,18 @@ namespace masonry
               << "Joints (brick pairs / face pairs): bed " << nj[0] << " / "
               << nf[0] << ", head " << nj[1] << " / " << nf[1] << ", collar "
               << nj[2] << " / " << nf[2] << "\n";
+        if (mortar)
+          {
+            const double hm            = settings.mesh.mortar_thickness;
+            summary["model"]           = "detailed";
+            summary["n_mortar_cells"]  = geometry.n_mortar_cells;
+            summary["joint_thickness"] = hm;
+            pcout << "Detailed model: units " << settings.mesh.size.length - hm
+                  << " x " << settings.mesh.size.width - hm << " x "
+                  << settings.mesh.size.height - hm << " m, mortar " << hm
+                  << " m thick in " << geometry.n_mortar_cells
+                  << " cells; joints are the unit-mortar interfaces\n";
+          }
         if (splitting_law)
           {
             const unsigned int t                   = splitting_type;
@@ -294,10 +320,13 @@ namespace masonry
         // every value a law computed from its inputs
         const std::pair<const char *, std::vector<DerivedValue>> derived[] = {
           {"brick_material", material.derived_values()},
+          {"mortar_material",
+           mortar ? mortar->derived_values() : std::vector<DerivedValue>()},
           {"interface_law", law.derived_values()},
           {"splitting_interfaces",
            splitting_law ? splitting_law->derived_values() :
-                           std::vector<DerivedValue>()}};
+                           std::vector<DerivedValue>()},
+          {"detailed_model", detailed_values()}};
         for (const auto &[part, values] : derived)
           {
             if (values.empty())
@@ -311,6 +340,40 @@ namespace masonry
                       << v.value << " " << v.unit << "  (" << v.how << ")\n";
               }
           }
+      }
+
+      std::vector<DerivedValue>
+      Wallette::detailed_values() const
+      {
+        std::vector<DerivedValue> values;
+        if (!mortar)
+          return values;
+        // the bond's penalties are contact penalties here: how much they
+        // add to the mortar layer, and the Lourenco-Rots stiffness that the
+        // simplified model would use for the same joint
+        const double hm = settings.mesh.mortar_thickness,
+                     Eb = material.youngs_modulus(),
+                     Em = mortar->youngs_modulus(),
+                     kn = law.elastic_tangent()[0][0];
+        values.push_back({"interface_normal_stiffness",
+                          kn,
+                          "Pa/m",
+                          "the interface law's initial normal penalty"});
+        values.push_back(
+          {"contact_compliance_ratio",
+           (2 / kn) / (hm / Em),
+           "-",
+           "(2 / k_n) / (h_m / E_m): the two unit-mortar interfaces of a bed "
+           "joint against the mortar layer's compliance (small: stiff "
+           "contact)"});
+        if (Eb > Em)
+          values.push_back(
+            {"lourenco_rots_normal_stiffness",
+             lourenco_rots_stiffness(Eb, Em, hm),
+             "Pa/m",
+             "E_b E_m / (h_m (E_b - E_m)): the simplified model's joint "
+             "stiffness for these moduli, not used by the detailed model"});
+        return values;
       }
 
       std::pair<double, std::vector<double>>
@@ -782,14 +845,29 @@ namespace masonry
       const WalletteSettings                                   &settings,
       std::vector<std::unique_ptr<postprocess::Postprocessor>> &postprocessors,
       RunContext                                               &context,
-      const InterfaceLaw                                       *splitting_law)
+      const InterfaceLaw                                       *splitting_law,
+      const BrickMaterial                                      *mortar_material)
     {
-      check_mesh(boxes, settings.mesh);
+      if (!settings.mesh.detailed)
+        check_mesh(boxes, settings.mesh);
       AssertThrow(!settings.mesh.split_units || splitting_law,
                   ExcMessage("internal error: split units need the "
                              "splitting interfaces' law"));
-      Wallette wallette(
-        boxes, material, law, splitting_law, settings, postprocessors, context);
+      AssertThrow(!settings.mesh.detailed || mortar_material,
+                  ExcMessage("internal error: the detailed model needs the "
+                             "mortar's material"));
+      // the detailed model: units and mortar behind one material
+      std::unique_ptr<BrickMaterial> regions;
+      if (settings.mesh.detailed)
+        regions = std::make_unique<RegionMaterial>(material, *mortar_material);
+      Wallette wallette(boxes,
+                        regions ? *regions : material,
+                        law,
+                        splitting_law,
+                        settings.mesh.detailed ? mortar_material : nullptr,
+                        settings,
+                        postprocessors,
+                        context);
       wallette.run();
     }
   } // namespace brickwork

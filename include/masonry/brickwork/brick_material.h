@@ -34,6 +34,11 @@ namespace masonry
        * nominal strengths): the random scatter of a specimen.
        */
       double strength_factor = 1;
+      /**
+       * What the point belongs to: 0 a unit (every cell of the simplified
+       * model), 1 the mortar of the detailed model.
+       */
+      unsigned int region = 0;
     };
 
     /**
@@ -176,6 +181,13 @@ namespace masonry
        */
       virtual dealii::SymmetricTensor<4, 3>
       elastic_stiffness() const;
+      /**
+       * The initial stiffness at @p point: elastic_stiffness() by default;
+       * a model of several materials (units and mortar) picks the one of
+       * the point's region.
+       */
+      virtual dealii::SymmetricTensor<4, 3>
+      elastic_stiffness_at(const BrickPoint &point) const;
 
       /**
        * The unit's uniaxial strengths (Pa) and tensile fracture energy

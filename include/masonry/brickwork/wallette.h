@@ -63,6 +63,17 @@ namespace masonry
        * whose half is not a whole number of cells stay whole.
        */
       bool split_units = false;
+      /**
+       * The `detailed' model (`Model = detailed'): the units at their actual
+       * size (the enlarged box less mortar_thickness along its upper faces in
+       * x, y and z), the mortar between them meshed as one layer of
+       * hexahedra of thickness mortar_thickness with its own material, and
+       * zero-thickness interfaces (the bond) between units and mortar.
+       * false: the `simplified' model of enlarged bricks.
+       */
+      bool detailed = false;
+      /** Thickness of the mortar joints of the detailed model, m. */
+      double mortar_thickness = 0;
     };
 
     /** The platens and the gauge (`Platen ...', `Gauge length'). */
@@ -219,7 +230,8 @@ namespace masonry
      * Build, solve and write the results of a wallette under a platen; the
      * @p postprocessors write the outputs, in their order. With
      * MeshSettings::split_units the splitting interfaces through the units
-     * follow @p splitting_law (required then).
+     * follow @p splitting_law (required then); with MeshSettings::detailed
+     * the mortar cells follow @p mortar_material (required then).
      */
     void
     run_wallette(
@@ -229,7 +241,8 @@ namespace masonry
       const WalletteSettings                                   &settings,
       std::vector<std::unique_ptr<postprocess::Postprocessor>> &postprocessors,
       RunContext                                               &context,
-      const InterfaceLaw *splitting_law = nullptr);
+      const InterfaceLaw  *splitting_law   = nullptr,
+      const BrickMaterial *mortar_material = nullptr);
   } // namespace brickwork
 } // namespace masonry
 

@@ -205,7 +205,7 @@ namespace masonry
         if (list.empty())
           add_subsystem({Interface::registry_section,
                          Interface::registry_entry,
-                         &Registry::declare_parameters});
+                         static_cast<Declare>(&Registry::declare_parameters)});
         for (const auto &e : list)
           AssertThrow(e.name != name,
                       dealii::ExcMessage("Two plugins register the name '" +
@@ -252,9 +252,20 @@ namespace masonry
       static void
       declare_parameters(dealii::ParameterHandler &prm)
       {
-        const unsigned int levels =
-          enter_path(prm, Interface::registry_section);
-        const auto &list = storage();
+        declare_parameters(prm, Interface::registry_section);
+      }
+
+      /**
+       * The same in @p section instead of the family's own subsection (a
+       * second member of the family, e.g. `Mortar material' next to `Brick
+       * material').
+       */
+      static void
+      declare_parameters(dealii::ParameterHandler &prm,
+                         const std::string        &section)
+      {
+        const unsigned int levels = enter_path(prm, section);
+        const auto        &list   = storage();
         // the interface's default, or the first plugin while that one is
         // not registered (e.g. a build without it)
         if constexpr (internal::IsMultiple<Interface>::value)
@@ -298,9 +309,15 @@ namespace masonry
       static std::string
       selected(dealii::ParameterHandler &prm)
       {
-        const unsigned int levels =
-          enter_path(prm, Interface::registry_section);
-        const std::string name = prm.get(Interface::registry_entry);
+        return selected(prm, Interface::registry_section);
+      }
+
+      /** The name of the plugin selected in @p section. */
+      static std::string
+      selected(dealii::ParameterHandler &prm, const std::string &section)
+      {
+        const unsigned int levels = enter_path(prm, section);
+        const std::string  name   = prm.get(Interface::registry_entry);
         leave_path(prm, levels);
         return name;
       }
@@ -393,18 +410,27 @@ namespace masonry
       static std::unique_ptr<Interface>
       create(dealii::ParameterHandler &prm, const std::string &name)
       {
+        return create(prm, name, Interface::registry_section);
+      }
+
+      /** Create the plugin called @p name and let it parse its subsection
+       * of @p section (see declare_parameters(prm, section)). */
+      static std::unique_ptr<Interface>
+      create(dealii::ParameterHandler &prm,
+             const std::string        &name,
+             const std::string        &section)
+      {
         for (const auto &e : storage())
           if (e.name == name)
             {
               std::unique_ptr<Interface> plugin = e.create();
               {
-                const unsigned int levels =
-                  enter_path(prm, Interface::registry_section);
-                ParsePathScope scope(Interface::registry_section);
+                const unsigned int levels = enter_path(prm, section);
+                ParsePathScope     scope(section);
                 plugin->parse_common_parameters(prm);
                 leave_path(prm, levels);
               }
-              std::string path = Interface::registry_section;
+              std::string path = section;
               path += (path.empty() ? "" : "/") + section_name(name);
               const unsigned int levels = enter_path(prm, path);
               {

@@ -68,10 +68,15 @@ namespace masonry
         // the elastic matrix of every cell, one per cell shape: all cells
         // of a linear material, the cells of a nonlinear one while they
         // stay elastic
-        const System               &system = parts.system;
-        const SymmetricTensor<4, 3> C      = parts.material.elastic_stiffness();
-        QGauss<3>                   quadrature(2);
-        FEValues<3>                 fe_values(system.fe,
+        const System &system = parts.system;
+        // the initial stiffness of each region (units, mortar)
+        BrickPoint unit_point, mortar_point;
+        mortar_point.region               = 1;
+        const SymmetricTensor<4, 3> Cs[2] = {
+          parts.material.elastic_stiffness_at(unit_point),
+          parts.material.elastic_stiffness_at(mortar_point)};
+        QGauss<3>   quadrature(2);
+        FEValues<3> fe_values(system.fe,
                               quadrature,
                               update_gradients | update_JxW_values);
         matrix_of_cell.assign(system.triangulation.n_active_cells(), nullptr);
@@ -79,7 +84,10 @@ namespace masonry
         for (const auto &cell : system.dof_handler.active_cell_iterators())
           if (cell->is_locally_owned())
             {
-              std::vector<long> shape;
+              const unsigned int region =
+                parts.specimen.cell_region[cell->active_cell_index()];
+              const SymmetricTensor<4, 3> &C = Cs[region];
+              std::vector<long>            shape{long(region)};
               for (unsigned int v = 1; v < 8; ++v)
                 for (unsigned int d = 0; d < 3; ++d)
                   shape.push_back(std::lround(
@@ -145,6 +153,7 @@ namespace masonry
         BrickPoint point;
         point.characteristic_length = parts.specimen.cell_length[c];
         point.strength_factor       = parts.specimen.cell_factor[c];
+        point.region                = parts.specimen.cell_region[c];
         point.time_step             = time_step;
         return point;
       }

@@ -21,23 +21,29 @@ namespace masonry
       const char *joint_type_name[4] = {"bed", "head", "collar", "splitting"};
 
       Joints
-      find_joints(const DoFHandler<3>         &dof_handler,
-                  const std::array<double, 3> &h,
-                  const double                 height)
+      find_joints(const DoFHandler<3> &dof_handler, const double height)
       {
         Joints joints;
-        // face centres lie on a grid of half the mesh spacing: exact keys
-        std::map<std::array<long, 3>,
-                 std::pair<DoFHandler<3>::active_cell_iterator, unsigned int>>
-                                                        open;
-        std::set<std::pair<unsigned int, unsigned int>> pairs[4];
-        auto key = [&](const Point<3> &p) {
-          std::array<long, 3> k;
+        // distinct face centres are at least a fraction of the smallest
+        // cell apart, coincident ones within rounding: a lexicographic
+        // order with a tolerance far below the one and above the other is
+        // a strict weak order on them (the detailed model's grid is not
+        // uniform, so the centres lie on no common grid)
+        const double tol  = 1e-9 * height;
+        const auto   less = [tol](const Point<3> &a, const Point<3> &b) {
           for (unsigned int d = 0; d < 3; ++d)
-            k[d] = std::lround(p[d] / (h[d] / 2));
-          return k;
+            if (a[d] < b[d] - tol)
+              return true;
+            else if (a[d] > b[d] + tol)
+              return false;
+          return false;
         };
-        const double tol = 1e-9 * height;
+        std::map<Point<3>,
+                 std::pair<DoFHandler<3>::active_cell_iterator, unsigned int>,
+                 decltype(less)>
+                                                        open(less);
+        std::set<std::pair<unsigned int, unsigned int>> pairs[4];
+        auto key = [](const Point<3> &p) { return p; };
         for (const auto &cell : dof_handler.active_cell_iterators())
           for (const unsigned int f : cell->face_indices())
             if (cell->face(f)->at_boundary())

@@ -56,12 +56,10 @@ namespace masonry
 
       /**
        * The coincident boundary faces of different cells of
-       * @p dof_handler (those on z = 0 and z = @p height are the platens'),
-       * found on a grid of half the mesh @p spacing.
+       * @p dof_handler (those on z = 0 and z = @p height are the platens').
        */
       Joints
       find_joints(const dealii::DoFHandler<3> &dof_handler,
-                  const std::array<double, 3> &spacing,
                   const double                 height);
     } // namespace model
   }   // namespace brickwork

@@ -8,7 +8,9 @@
 
 #include "mesh.h"
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 #include <sstream>
 
 namespace masonry
@@ -96,6 +98,160 @@ namespace masonry
         }
       } // namespace
 
+      namespace
+      {
+        /** The direction a unit is split in (its longer horizontal side). */
+        unsigned int
+        split_direction(const Box &box)
+        {
+          return box.upper[1] - box.lower[1] > box.upper[0] - box.lower[0] ? 1 :
+                                                                             0;
+        }
+      } // namespace
+
+      Geometry
+      make_detailed_mesh(const std::vector<Box> &boxes,
+                         const MeshSettings     &settings,
+                         Triangulation<3>       &triangulation)
+      {
+        const double hm = settings.mortar_thickness;
+        const auto   h  = mesh_spacing(settings);
+        Geometry     g;
+        for (const Box &box : boxes)
+          for (unsigned int d = 0; d < 3; ++d)
+            {
+              const double top    = box.upper[d] - hm;
+              (d == 0 ? g.length :
+               d == 1 ? g.thickness :
+                        g.height) = std::max(d == 0 ? g.length :
+                                             d == 1 ? g.thickness :
+                                                      g.height,
+                                             top);
+            }
+        const double extent[3] = {g.length, g.thickness, g.height};
+        const double tol       = 1e-9 * std::max({g.length, g.height});
+        // the units and, split, their halves
+        struct Piece
+        {
+          std::array<double, 3> lower, upper;
+          unsigned int          brick;
+        };
+        std::vector<Piece>  pieces;
+        std::vector<double> lines[3];
+        for (unsigned int b = 0; b < boxes.size(); ++b)
+          {
+            Piece unit{boxes[b].lower, boxes[b].upper, b};
+            for (unsigned int d = 0; d < 3; ++d)
+              {
+                unit.upper[d] -= hm;
+                lines[d].push_back(unit.lower[d]);
+                lines[d].push_back(unit.upper[d]);
+              }
+            const unsigned int d    = split_direction(boxes[b]);
+            const double       size = unit.upper[d] - unit.lower[d];
+            if (settings.split_units && !settings.bonded &&
+                std::round(size / h[d]) >= 2)
+              {
+                const double middle = 0.5 * (unit.lower[d] + unit.upper[d]);
+                Piece        first = unit, second = unit;
+                first.upper[d] = second.lower[d] = middle;
+                lines[d].push_back(middle);
+                pieces.push_back(first);
+                pieces.push_back(second);
+                ++g.n_split_units;
+              }
+            else
+              pieces.push_back(unit);
+          }
+        // the grid: the lines through every face, each interval divided
+        // at about the mesh spacing (mortar intervals, h_m, in one cell)
+        std::vector<double> grid[3];
+        for (unsigned int d = 0; d < 3; ++d)
+          {
+            auto &l = lines[d];
+            std::sort(l.begin(), l.end());
+            std::vector<double> unique;
+            for (const double x : l)
+              if (unique.empty() || x - unique.back() > tol)
+                unique.push_back(x);
+            AssertThrow(unique.front() > -tol &&
+                          std::abs(unique.back() - extent[d]) < tol,
+                        ExcInternalError());
+            for (unsigned int i = 0; i + 1 < unique.size(); ++i)
+              {
+                const double       a = unique[i], b = unique[i + 1];
+                const unsigned int n = std::max(1., std::round((b - a) / h[d]));
+                for (unsigned int k = 0; k < n; ++k)
+                  grid[d].push_back(a + (b - a) * k / n);
+              }
+            grid[d].push_back(unique.back());
+          }
+        // the owner of each grid cell: a piece, or the mortar
+        const unsigned int n[3] = {
+          static_cast<unsigned int>(grid[0].size()) - 1,
+          static_cast<unsigned int>(grid[1].size()) - 1,
+          static_cast<unsigned int>(grid[2].size()) - 1};
+        const unsigned int        mortar = pieces.size();
+        std::vector<unsigned int> owner(n[0] * n[1] * n[2], mortar);
+        for (unsigned int p = 0; p < pieces.size(); ++p)
+          {
+            unsigned int from[3], to[3];
+            for (unsigned int d = 0; d < 3; ++d)
+              {
+                from[d] = std::lower_bound(grid[d].begin(),
+                                           grid[d].end(),
+                                           pieces[p].lower[d] - tol) -
+                          grid[d].begin();
+                to[d] = std::lower_bound(grid[d].begin(),
+                                         grid[d].end(),
+                                         pieces[p].upper[d] - tol) -
+                        grid[d].begin();
+              }
+            for (unsigned int k = from[2]; k < to[2]; ++k)
+              for (unsigned int j = from[1]; j < to[1]; ++j)
+                for (unsigned int i = from[0]; i < to[0]; ++i)
+                  owner[i + n[0] * (j + n[1] * k)] = p;
+          }
+        // one vertex per grid point and owner (all owners one, bonded)
+        std::map<std::array<unsigned int, 4>, unsigned int> vertex_of;
+        std::vector<Point<3>>                               vertices;
+        std::vector<CellData<3>>                            cells;
+        for (unsigned int k = 0; k < n[2]; ++k)
+          for (unsigned int j = 0; j < n[1]; ++j)
+            for (unsigned int i = 0; i < n[0]; ++i)
+              {
+                const unsigned int o = owner[i + n[0] * (j + n[1] * k)];
+                CellData<3>        c;
+                for (unsigned int v = 0; v < 8; ++v)
+                  {
+                    const std::array<unsigned int, 4> key = {
+                      {i + v % 2,
+                       j + (v / 2) % 2,
+                       k + v / 4,
+                       settings.bonded ? 0 : o}};
+                    const auto it = vertex_of.find(key);
+                    if (it != vertex_of.end())
+                      c.vertices[v] = it->second;
+                    else
+                      {
+                        c.vertices[v] = vertices.size();
+                        vertex_of.emplace(key, vertices.size());
+                        vertices.emplace_back(grid[0][key[0]],
+                                              grid[1][key[1]],
+                                              grid[2][key[2]]);
+                      }
+                  }
+                c.material_id = o == mortar ? boxes.size() : pieces[o].brick;
+                if (o == mortar)
+                  ++g.n_mortar_cells;
+                cells.push_back(c);
+              }
+        g.n_bricks   = boxes.size();
+        g.gross_area = g.length * g.thickness;
+        triangulation.create_triangulation(vertices, cells, SubCellData());
+        return g;
+      }
+
       Geometry
       make_mesh(const std::vector<Box> &boxes,
                 const MeshSettings     &settings,
@@ -119,9 +275,8 @@ namespace masonry
         for (unsigned int b = 0; b < boxes.size(); ++b)
           {
             const Box         &box = boxes[b];
-            const unsigned int d =
-              box.upper[1] - box.lower[1] > box.upper[0] - box.lower[0] ? 1 : 0;
-            const unsigned int n = divisions(box, d, h[d]);
+            const unsigned int d   = split_direction(box);
+            const unsigned int n   = divisions(box, d, h[d]);
             if (settings.split_units && !settings.bonded && n >= 2 &&
                 n % 2 == 0)
               {

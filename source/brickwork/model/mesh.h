@@ -24,6 +24,8 @@ namespace masonry
         unsigned int n_bricks = 0;
         /** Units meshed as two halves (MeshSettings::split_units). */
         unsigned int n_split_units = 0;
+        /** Cells of mortar (the detailed model; material id n_bricks). */
+        unsigned int n_mortar_cells = 0;
       };
 
       /** Cells of @p box along direction @p d of spacing @p h; 0 if not a
@@ -35,6 +37,23 @@ namespace masonry
        * Fill @p triangulation with the bricks @p boxes (material id = brick
        * index) meshed as @p settings say; returns the dimensions.
        */
+      /**
+       * The detailed model (MeshSettings::detailed): each unit is its box
+       * less the mortar thickness h_m along the box's upper faces in x, y
+       * and z (so every unit has the actual brick size and the wallette is
+       * h_m shorter, thinner and lower than its enlarged boxes), the rest of
+       * the wallette's bounding box is mortar. All cells lie on one tensor
+       * grid through every unit's faces (and mid-planes of split units),
+       * mortar intervals one cell thick, the others divided at about the
+       * mesh spacing; the mortar cells (material id = number of bricks)
+       * share their vertices, each unit (or half unit) has its own, unless
+       * `bonded'.
+       */
+      Geometry
+      make_detailed_mesh(const std::vector<Box>   &boxes,
+                         const MeshSettings       &settings,
+                         dealii::Triangulation<3> &triangulation);
+
       Geometry
       make_mesh(const std::vector<Box>   &boxes,
                 const MeshSettings       &settings,

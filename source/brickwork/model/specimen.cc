@@ -45,6 +45,15 @@ namespace masonry
             joint_factor[{face.brick_a, face.brick_b}] = 1;
         for (auto &j : joint_factor)
           j.second = cov > 0 ? draw() : 1.;
+        // the mortar of the detailed model: one factor, drawn last (the
+        // simplified model's specimens stay as they were)
+        s.cell_region.assign(n_cells, 0);
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->material_id() == n_bricks)
+            s.cell_region[cell->active_cell_index()] = 1;
+        if (std::find(s.cell_region.begin(), s.cell_region.end(), 1) !=
+            s.cell_region.end())
+          brick_factor.push_back(cov > 0 ? draw() : 1.);
         // a splitting interface has the strength factor of its unit
         for (unsigned int i = 0; i < faces.size(); ++i)
           s.face_factor[i] =

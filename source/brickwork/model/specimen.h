@@ -26,6 +26,9 @@ namespace masonry
          * deleted. */
         std::vector<double> cell_length, cell_factor;
         std::vector<char>   deleted;
+        /** Per active cell: BrickPoint::region (0 unit, 1 mortar: the cells
+         * of material id n_bricks in the detailed model). */
+        std::vector<unsigned char> cell_region;
         /** Per joint face: strength factor, deleted. */
         std::vector<double> face_factor;
         std::vector<char>   face_deleted;
@@ -44,8 +47,10 @@ namespace masonry
 
       /**
        * The specimen of @p settings: a factor 1 + CoV N(0, 1), cut to
-       * [0.2, 1.8], per brick (in brick order) and then per joint (brick
-       * pair, in pair order), drawn from the seed; nothing deleted.
+       * [0.2, 1.8], per brick (in brick order), then per joint (brick
+       * pair, in pair order), then one for the mortar cells of the detailed
+       * model (material id @p n_bricks), drawn from the seed; nothing
+       * deleted.
        */
       Specimen
       make_specimen(const dealii::Triangulation<3> &triangulation,

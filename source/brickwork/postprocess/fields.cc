@@ -116,6 +116,10 @@ namespace masonry
           const unsigned int first_reported = 7;
           if (view.settings.specimen.deletion_strain > 0)
             names.emplace_back("deleted");
+          // the detailed model: 0 unit, 1 mortar
+          const bool regions = view.settings.mesh.detailed;
+          if (regions)
+            names.emplace_back("region");
           fields.assign(names.size(), Vector<float>(n_cells));
           QGauss<3>   quadrature(2);
           FEValues<3> fe_values(view.system.fe, quadrature, update_gradients);
@@ -131,8 +135,11 @@ namespace masonry
               {
                 const unsigned int c = cell->active_cell_index();
                 fields[6][c]         = cell->subdomain_id();
+                if (regions)
+                  fields.back()[c] = view.specimen.cell_region[c];
                 if (view.settings.specimen.deletion_strain > 0)
-                  fields.back()[c] = view.specimen.deleted[c];
+                  fields[names.size() - 1 - regions][c] =
+                    view.specimen.deleted[c];
                 if (view.specimen.deleted[c])
                   continue;
                 fe_values.reinit(cell);
@@ -141,6 +148,7 @@ namespace masonry
                 BrickPoint point;
                 point.characteristic_length = view.specimen.cell_length[c];
                 point.strength_factor       = view.specimen.cell_factor[c];
+                point.region                = view.specimen.cell_region[c];
                 SymmetricTensor<2, 3> sigma, mean;
                 SymmetricTensor<4, 3> C;
                 for (unsigned int q = 0; q < 8; ++q)
