@@ -13,6 +13,7 @@
 
 #include <deal.II/base/utilities.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "../brickwork/laws/splitting.h"
@@ -29,8 +30,25 @@ namespace masonry
       void
       declare_mortar_material(dealii::ParameterHandler &prm)
       {
-        plugins::Registry<brickwork::BrickMaterial>::declare_parameters(
-          prm, mortar_section);
+        using Materials = plugins::Registry<brickwork::BrickMaterial>;
+        Materials::declare_parameters(prm, mortar_section);
+        // the family's entry, declared again with the mortar's own default
+        // and text (the family's text is about the enlarged bricks)
+        prm.enter_subsection(mortar_section);
+        const bool has_mortar =
+          std::any_of(Materials::entries().begin(),
+                      Materials::entries().end(),
+                      [](const auto &e) { return e.name == "mortar"; });
+        prm.declare_entry(
+          "Model",
+          has_mortar ? "mortar" : Materials::entries().front().name,
+          dealii::Patterns::Selection(Materials::pattern()),
+          Materials::documentation(
+            "The constitutive law of the mortar cells of the `detailed' "
+            "model (`subsection Wallette/Model = detailed'), any brick "
+            "material; not used by the `simplified' model, whose enlarged "
+            "bricks contain the mortar."));
+        prm.leave_subsection();
       }
 
       [[maybe_unused]] const bool mortar_declared =
