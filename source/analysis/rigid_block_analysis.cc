@@ -619,8 +619,9 @@ namespace masonry
         }
       const auto         start     = std::chrono::steady_clock::now();
       const double       cpu_start = thread_cpu_seconds();
-      const lp::Solution solution =
-        warm ? solver->solve_warm(lp, *warm) : solver->solve(lp);
+      const lp::Solution solution  = warm && solver->warm_starts() ?
+                                       solver->solve_warm(lp, *warm) :
+                                       solver->solve(lp);
       seconds_solve +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
           .count();

@@ -52,13 +52,24 @@ namespace masonry
                         "by the back-end: CPU time for Clp, wall-clock time "
                         "for GLPK); 0 means no limit. A solve that reaches "
                         "the limit reports status `failed'.");
+      prm.declare_entry(
+        "Warm starts",
+        "true",
+        dealii::Patterns::Bool(),
+        "Whether a sequence of LPs of one shape (the bisection of `minimum "
+        "thickness') starts each solve from the basis of an earlier one "
+        "(Clp; GLPK always starts cold). false: every LP from scratch, for "
+        "checks and timing (the same result within the LP tolerances; near "
+        "a minimum thickness the starting basis can decide `stands', see "
+        "doc/rigid-blocks.md). Unitless flag.");
     }
 
     void
     Interface::parse_common_parameters(dealii::ParameterHandler &prm)
     {
-      export_mps_file    = prm.get_bool("Export MPS file");
-      time_limit_seconds = prm.get_double("Time limit");
+      export_mps_file     = prm.get_bool("Export MPS file");
+      time_limit_seconds  = prm.get_double("Time limit");
+      warm_starts_enabled = prm.get_bool("Warm starts");
     }
 
     void
@@ -81,6 +92,12 @@ namespace masonry
     Interface::time_limit() const
     {
       return time_limit_seconds;
+    }
+
+    bool
+    Interface::warm_starts() const
+    {
+      return warm_starts_enabled;
     }
   } // namespace lp
 } // namespace masonry

@@ -206,42 +206,48 @@ namespace masonry
     LinearProgram::ColumnMatrix
     LinearProgram::column_matrix() const
     {
-      // sort triplet indices by (column, row), then merge duplicates
+      // triplet indices by (column, row): a counting sort by column (linear;
+      // std::sort of the index vector was 3 % of a minimum-thickness run),
+      // then each column's few entries by row, duplicates in the order they
+      // were added, which are then summed
+      const unsigned int       n = n_columns();
+      std::vector<std::size_t> first(n + 1, 0);
+      for (const Entry &e : triplets)
+        ++first[e.column + 1];
+      for (unsigned int c = 0; c < n; ++c)
+        first[c + 1] += first[c];
       std::vector<std::size_t> order(triplets.size());
-      for (std::size_t k = 0; k < order.size(); ++k)
-        order[k] = k;
-      std::sort(order.begin(),
-                order.end(),
-                [this](const std::size_t a, const std::size_t b) {
-                  const Entry &ea = triplets[a], &eb = triplets[b];
-                  return ea.column != eb.column ? ea.column < eb.column :
-                                                  ea.row < eb.row;
-                });
+      {
+        std::vector<std::size_t> next(first.begin(), first.end() - 1);
+        for (std::size_t k = 0; k < triplets.size(); ++k)
+          order[next[triplets[k].column]++] = k;
+      }
+      for (unsigned int c = 0; c < n; ++c)
+        std::stable_sort(order.begin() + first[c],
+                         order.begin() + first[c + 1],
+                         [this](const std::size_t a, const std::size_t b) {
+                           return triplets[a].row < triplets[b].row;
+                         });
       ColumnMatrix m;
-      m.start.assign(n_columns() + 1, 0);
+      m.start.assign(n + 1, 0);
       m.row_index.reserve(triplets.size());
       m.value.reserve(triplets.size());
-      std::vector<unsigned int> column_of;
-      column_of.reserve(triplets.size());
-      for (std::size_t k = 0; k < order.size();)
+      for (unsigned int c = 0; c < n; ++c)
         {
-          const Entry &e     = triplets[order[k]];
-          double       value = 0;
-          for (; k < order.size() && triplets[order[k]].column == e.column &&
-                 triplets[order[k]].row == e.row;
-               ++k)
-            value += triplets[order[k]].value;
-          if (value != 0.)
+          for (std::size_t k = first[c]; k < first[c + 1];)
             {
-              m.row_index.push_back(e.row);
-              m.value.push_back(value);
-              column_of.push_back(e.column);
+              const unsigned int row   = triplets[order[k]].row;
+              double             value = 0;
+              for (; k < first[c + 1] && triplets[order[k]].row == row; ++k)
+                value += triplets[order[k]].value;
+              if (value != 0.)
+                {
+                  m.row_index.push_back(row);
+                  m.value.push_back(value);
+                }
             }
+          m.start[c + 1] = m.row_index.size();
         }
-      for (const unsigned int c : column_of)
-        ++m.start[c + 1];
-      for (unsigned int c = 0; c < n_columns(); ++c)
-        m.start[c + 1] += m.start[c];
       return m;
     }
 

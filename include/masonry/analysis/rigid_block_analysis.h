@@ -147,8 +147,8 @@ namespace masonry
       /**
        * Solve @p lp, timing it into seconds_solve, and write it to
        * @p mps_name in the output directory if `Export MPS file` is set.
-       * With @p warm, the solver starts from (and updates) that state
-       * (lp::Interface::solve_warm()).
+       * With @p warm (and `LP solver/Warm starts` true), the solver starts
+       * from (and updates) that state (lp::Interface::solve_warm()).
        */
       lp::Solution
       solve(const lp::LinearProgram &lp,

@@ -117,8 +117,8 @@ namespace masonry
       selection_documentation();
 
       /**
-       * Entries shared by all back-ends: `Export MPS file` (Bool) and
-       * `Time limit` (Double, seconds).
+       * Entries shared by all back-ends: `Export MPS file` (Bool), `Time
+       * limit` (Double, seconds) and `Warm starts` (Bool).
        */
       static void
       declare_common_parameters(dealii::ParameterHandler &prm);
@@ -165,11 +165,20 @@ namespace masonry
       double
       time_limit() const;
 
+      /**
+       * Whether a caller with a sequence of LPs of one shape should call
+       * solve_warm() (entry `Warm starts`); false: solve() every time.
+       */
+      bool
+      warm_starts() const;
+
     protected:
       /** Value of `Export MPS file`. */
       bool export_mps_file = false;
       /** Value of `Time limit`, in seconds (0: no limit). */
       double time_limit_seconds = 0;
+      /** Value of `Warm starts`. */
+      bool warm_starts_enabled = true;
     };
   } // namespace lp
 } // namespace masonry
