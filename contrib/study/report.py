@@ -232,8 +232,9 @@ def codes_table(data, rows):
     f_m = MORTAR_STRENGTH
     lines = [
         f"Code strengths for f_b = {f_b:g} MPa (the bricks' `Compressive "
-        f"strength') and f_m = f_j = {f_m:g} MPa (the examples' mortar; the "
-        "simplified model takes it only through the joint stiffness). "
+        f"strength') and f_m = f_j = {f_m:g} MPa (the examples' mortar: "
+        "the detailed model's mortar cells; the simplified model takes it "
+        "only through the joint stiffness). "
         "Eurocode 6 gives the characteristic (5 %) strength f_k = K f_b^0.7 "
         f"f_m^0.3 with K = {EC6_K} (clay, group 1; recalled), times "
         f"{EC6_LONGITUDINAL} with a longitudinal joint (double, triple; "
@@ -393,7 +394,8 @@ def sweep_section(directory, sweep):
         "strain in each sweep-*.prm) for every pair of unit strength f_b "
         "and mortar strength f_m; the other unit and mortar inputs follow "
         "from f_b and f_m by the relations of contrib/study/study.py, "
-        "sweep_inputs() (unit E_b = 500 f_b, tensile strength 0.1 f_b; "
+        "sweep_inputs() (unit E_b = 500 f_b, tensile strength 0.1 f_b, "
+        "with the detailed model the unit law's uniaxial strength 0.8 f_b; "
         "mortar E_m = 200 f_m; the values of each pair: the header of "
         "its sweep-*.prm; sources: doc/references-brickwork-strength.md). "
         "Target band: "

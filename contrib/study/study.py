@@ -451,8 +451,9 @@ def main():
 
     runs = []
     if "specimens" in parts:
+        # seed by seed, so that a study cut short has every thickness
         runs += [make_prm(t, s, directory, args.quick, args.model)
-                 for t in thicknesses for s in seeds]
+                 for s in seeds for t in thicknesses]
     if "sweep" in parts:
         runs += [make_sweep_prm(f_b, f_m, directory, args.quick, args.model)
                  for f_b in SWEEP_FB for f_m in SWEEP_FM]
