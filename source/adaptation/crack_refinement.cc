@@ -56,6 +56,17 @@ namespace masonry
         "lines; every patch gets the same number of "
         "lines u = const (a patch with fewer marked strips splits its next "
         "most active ones).");
+      prm.declare_entry(
+        "Marking",
+        "joint",
+        dealii::Patterns::Selection("joint|per direction"),
+        "`joint': one Dörfler marking of the strips of both directions "
+        "(`Marked fraction' of the total activity); `per direction': one "
+        "for the u strips (of all patches) and one for the v strips, each "
+        "with `Marked fraction' of its own direction's total, so that both "
+        "directions are refined every stage (strips whose activity is below "
+        "1e-6 of the total of both directions are never split: a direction "
+        "without cracks stays). Unitless choice.");
       prm.declare_entry("Largest number of blocks",
                         "100000",
                         dealii::Patterns::Integer(1),
@@ -69,6 +80,7 @@ namespace masonry
     {
       stages          = prm.get_integer("Stages");
       marked_fraction = prm.get_double("Marked fraction");
+      per_direction   = prm.get("Marking") == "per direction";
       max_blocks      = prm.get_integer("Largest number of blocks");
     }
 
@@ -86,7 +98,8 @@ namespace masonry
 
     std::vector<bool>
     CrackRefinement::mark(const std::vector<double> &indicator,
-                          const unsigned int         at_least) const
+                          const unsigned int         at_least,
+                          const double               floor) const
     {
       std::vector<unsigned int> order(indicator.size());
       std::iota(order.begin(), order.end(), 0u);
@@ -103,7 +116,7 @@ namespace masonry
       for (const unsigned int k : order)
         {
           // round-off activity (a strip that does not crack) never counts
-          const bool active = indicator[k] > 1e-9 * total;
+          const bool active = indicator[k] > std::max(1e-9 * total, floor);
           const bool needed =
             active && (count == 0 || sum < marked_fraction * total);
           if (!needed && count >= at_least)
@@ -329,7 +342,20 @@ namespace masonry
           for (const auto &x : su)
             all.insert(all.end(), x.begin(), x.end());
           all.insert(all.end(), sv.begin(), sv.end());
-          const std::vector<bool>        marked = refinement.mark(all);
+          std::vector<bool> marked;
+          if (refinement.per_direction)
+            {
+              // u strips of all patches, then v strips
+              const double floor =
+                1e-6 * std::accumulate(all.begin(), all.end(), 0.);
+              const unsigned int n = n_patches * options.n_u;
+              marked               = refinement.mark(
+                std::vector<double>(all.begin(), all.begin() + n), 0, floor);
+              const auto mv = refinement.mark(sv, 0, floor);
+              marked.insert(marked.end(), mv.begin(), mv.end());
+            }
+          else
+            marked = refinement.mark(all);
           std::vector<std::vector<bool>> mu(n_patches);
           unsigned int                   n_mu = 0;
           for (unsigned int p = 0; p < n_patches; ++p)
@@ -399,7 +425,7 @@ MASONRY_REGISTER_OPTIMISER(
   "crack refinement",
   "Refinement where the mechanism cracks (not a gene optimiser): solve the "
   "uniform mesh, split the parameter strips whose blocks crack most "
-  "(`Marked fraction' of the crack activity, per direction) at their "
+  "(`Marked fraction' of the crack activity, `Marking') at their "
   "middle, solve again, `Stages' times; then analyse the last mesh. The "
   "meshes are nested, so a settlement's objective never decreases from "
   "one stage to the next. `settlement' only; the entries of `Adaptation' "

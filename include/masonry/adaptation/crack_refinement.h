@@ -29,7 +29,7 @@ namespace masonry
     class CrackRefinement : public Optimiser
     {
     public:
-      /** Stages, Marked fraction, Largest number of blocks. */
+      /** Stages, Marked fraction, Marking, Largest number of blocks. */
       static void
       declare_parameters(dealii::ParameterHandler &prm);
 
@@ -48,16 +48,20 @@ namespace masonry
        * @p indicator (≥ 0) whose sum first reaches `Marked fraction` of the
        * total (at least one), and at least @p at_least of them (the
        * largest ones). Strips with no activity (below 1e-9 of the total)
-       * are never marked unless @p at_least asks for them.
+       * or not above @p floor are never marked unless @p at_least asks
+       * for them.
        */
       std::vector<bool>
       mark(const std::vector<double> &indicator,
-           const unsigned int         at_least = 0) const;
+           const unsigned int         at_least = 0,
+           const double               floor    = 0) const;
 
       /** Refinement stages (solves before the final analysis). */
       unsigned int stages = 3;
       /** Fraction of the total crack activity whose strips are split. */
       double marked_fraction = 0.5;
+      /** `Marking = per direction`: one marking per direction. */
+      bool per_direction = false;
       /** No stage refines a mesh with this many blocks or more. */
       unsigned int max_blocks = 100000;
     };
