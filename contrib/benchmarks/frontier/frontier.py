@@ -50,9 +50,10 @@ OPTIMISERS = ["genetic", "differential evolution", "cmaes", "particle swarm"]
 GENERATION = re.compile(r"^\s*generation (\d+): best (\S+), mean \S+, (\d+) evaluations")
 STAGE = re.compile(r"^\s*stage (\d+): (\d+) blocks .*, best (\S+),")
 # crack refinement: (start mesh, stages, marked fraction, marking)
-CRACK = [((3, 4), 3, 0.6, "joint"), ((3, 4), 4, 0.6, "joint"),
-         ((3, 4), 3, 0.6, "per direction"), ((3, 4), 3, 0.8, "per direction"),
-         ((6, 8), 2, 0.6, "joint"), ((6, 8), 2, 0.6, "per direction")]
+CRACK = [((3, 4), 3, 0.5, "per direction"), ((3, 4), 3, 0.6, "per direction"),
+         ((3, 4), 4, 0.5, "per direction"), ((3, 4), 3, 0.7, "per direction"),
+         ((6, 8), 1, 0.5, "per direction"), ((6, 8), 1, 0.6, "per direction"),
+         ((3, 4), 3, 0.6, "joint")]
 TICK = os.sysconf("SC_CLK_TCK")
 
 
