@@ -10,21 +10,8 @@ masonry_build=$2
 masonry=$3
 work=$4
 
-rm -rf "$work"
-mkdir -p "$work"
-cd "$work"
-echo "--- configuring the plugin against $masonry_build"
-cmake -S "$source_dir" -B build -Dmasonry_DIR="$masonry_build" >cmake.log 2>&1 || {
-  cat cmake.log
-  exit 1
-}
-echo "--- building"
-cmake --build build >build.log 2>&1 || {
-  cat build.log
-  exit 1
-}
-library="$work/build/libblock_on_plane.so"
-test -f "$library"
+source "$(dirname "${BASH_SOURCE[0]}")/plugin_common.sh"
+build_plugin "$source_dir" "$masonry_build" "$work" block_on_plane
 
 check() { # name width height friction
   local name=$1 width=$2 height=$3 friction=$4

@@ -13,21 +13,8 @@ masonry=$3
 work=$4
 example=$5
 
-rm -rf "$work"
-mkdir -p "$work"
-cd "$work"
-echo "--- configuring the postprocessor against $masonry_build"
-cmake -S "$source_dir" -B build -Dmasonry_DIR="$masonry_build" >cmake.log 2>&1 || {
-  cat cmake.log
-  exit 1
-}
-echo "--- building"
-cmake --build build >build.log 2>&1 || {
-  cat build.log
-  exit 1
-}
-library="$work/build/libhinges_csv.so"
-test -f "$library"
+source "$(dirname "${BASH_SOURCE[0]}")/plugin_common.sh"
+build_plugin "$source_dir" "$masonry_build" "$work" hinges_csv
 
 write_prm() { # name list [file name]
   cp "$example" "$1.prm"
@@ -49,13 +36,7 @@ PRM
 }
 
 write_prm listed "cracks, hinges csv"
-# (grep reads the whole text: grep -q would stop early and, under pipefail,
-# the SIGPIPE of masonry would count as a failure)
-"$masonry" --print-parameters listed.prm | grep "^    # \`hinges csv': hinges.csv" >/dev/null || {
-  echo "hinges csv is not documented under List of postprocessors"
-  exit 1
-}
-echo "hinges csv: documented under List of postprocessors by --print-parameters"
+expect_documented "$masonry" listed.prm "hinges csv" hinges.csv
 "$masonry" listed.prm >listed.log
 
 write_prm renamed "hinges csv" my_hinges.csv

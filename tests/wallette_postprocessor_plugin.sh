@@ -15,21 +15,8 @@ masonry_build=$2
 masonry=$3
 work=$4
 
-rm -rf "$work"
-mkdir -p "$work"
-cd "$work"
-echo "--- configuring the postprocessor against $masonry_build"
-cmake -S "$source_dir" -B build -Dmasonry_DIR="$masonry_build" >cmake.log 2>&1 || {
-  cat cmake.log
-  exit 1
-}
-echo "--- building"
-cmake --build build >build.log 2>&1 || {
-  cat build.log
-  exit 1
-}
-library="$work/build/libpeak_csv.so"
-test -f "$library"
+source "$(dirname "${BASH_SOURCE[0]}")/plugin_common.sh"
+build_plugin "$source_dir" "$masonry_build" "$work" peak_csv
 
 write_prm() { # name list [file name]
   cat >"$1.prm" <<PRM
@@ -69,13 +56,7 @@ PRM
 }
 
 write_prm listed "curve tables, peak csv"
-# (grep reads the whole text: grep -q would stop early and, under pipefail,
-# the SIGPIPE of masonry would count as a failure)
-"$masonry" --print-parameters listed.prm | grep "^    # \`peak csv': peak.csv" >/dev/null || {
-  echo "peak csv is not documented under List of postprocessors"
-  exit 1
-}
-echo "peak csv: documented under List of postprocessors by --print-parameters"
+expect_documented "$masonry" listed.prm "peak csv" peak.csv
 "$masonry" listed.prm >listed.log
 
 write_prm renamed "peak csv" my_peak.csv
