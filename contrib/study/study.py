@@ -2,8 +2,10 @@
 """Run the wallette study (called by contrib/study/run, which documents
 the options): (a) the nine specimens, per thickness and seed a copy of the
 cyclic example parameter file with the seed and the output directory
-changed; (b) the single-leaf sweep over the unit strength f_b and the mortar
-strength f_m, a monotonic copy of the single-leaf cyclic example with the
+changed (with the detailed model, the default, see detailed_specimen());
+(b) the single-leaf sweep over the unit strength f_b and the mortar
+strength f_m: a monotonic copy of contrib/study/sweep-detailed.prm (detailed
+model) or of the single-leaf cyclic example (simplified model) with the
 unit and mortar inputs of each pair (see sweep_inputs()); each a 1-rank
 masonry run, several at a time, with its CPU time recorded; then report.py
 writes the tables, the targets of issue 16 and the plots."""
@@ -67,13 +69,34 @@ def mortar_modulus(f_m):
     return 200.0 * f_m * 1e6
 
 
+# uniaxial compressive strength of the unit material / normalised unit
+# strength f_b (EN 772-1: the strength of a 100 mm cube-equivalent, with the
+# platens' restraint, which the unit law does not add: a cube of the law
+# between rigid platens peaks 1.5 % above its f_c); 0.8 is the ratio of
+# cylinder to cube strength of concrete (EN 1992-1-1 strength classes,
+# recalled), taken for fired clay; see doc/references-brickwork-strength.md
+UNIAXIAL = 0.8
+
+
 def sweep_inputs(f_b, f_m, nu_b=0.15, nu_m=0.2):
-    """The laboratory inputs of one sweep pair (SI): the unit's E_b = 500 f_b
-    (the examples' 10 GPa for 20 MPa), tensile strength 0.1 f_b (rule of
-    thumb), the mortar's E_m = mortar_modulus(f_m)."""
-    return {"f_b": f_b * 1e6, "f_bt": 0.1 * f_b * 1e6, "E_b": 500 * f_b * 1e6,
-            "nu_b": nu_b, "f_m": f_m * 1e6, "E_m": mortar_modulus(f_m),
-            "nu_m": nu_m}
+    """The laboratory inputs of one sweep pair (SI) from the unit and mortar
+    strengths f_b, f_m (MPa): the unit law's uniaxial compressive strength
+    f_bc = UNIAXIAL f_b (f_b is the normalised strength the codes use), the
+    unit's E_b = 500 f_b (the examples' 10 GPa for 20 MPa), tensile strength f_bt = 0.1 f_b (rule of thumb),
+    tensile fracture energy G_bt = 80 J/m^2 (the examples'), compressive
+    fracture energy G_bc = 15 + 0.43 f_b - 0.0036 f_b^2 N/mm; the mortar's
+    E_m = mortar_modulus(f_m), tensile strength f_mt = 0.1 f_m (the
+    `mortar' law's default 0.5 MPa at 5 MPa) and tensile fracture energy
+    G_mt = 20 f_mt J/m^2 per MPa (the law's default 10 J/m^2 at 0.5 MPa,
+    scaled so that the mortar's characteristic length E_m G_mt / f_mt^2,
+    and with it the brittleness of the layer, is the same for every f_m:
+    an assumption, not a measured relation)."""
+    return {"f_b": f_b * 1e6, "f_bc": UNIAXIAL * f_b * 1e6,
+            "f_bt": 0.1 * f_b * 1e6, "E_b": 500 * f_b * 1e6,
+            "nu_b": nu_b, "G_bt": 80.0,
+            "G_bc": (15 + 0.43 * f_b - 0.0036 * f_b ** 2) * 1e3,
+            "f_m": f_m * 1e6, "f_mt": 0.1 * f_m * 1e6, "G_mt": 2.0 * f_m,
+            "E_m": mortar_modulus(f_m), "nu_m": nu_m}
 
 
 def joint_penalties(E_b, E_m, nu_b, nu_m, h_m):
@@ -144,6 +167,8 @@ def get_in(text, path, name):
 def make_sweep_prm(f_b, f_m, directory, quick, model):
     """The single-leaf wallette for one (f_b, f_m) pair (see the module
     documentation); returns (name, prm, out)."""
+    if model == "detailed":
+        return make_detailed_sweep_prm(f_b, f_m, directory, quick)
     source = os.path.join(root, "prm", "examples",
                           "wallette-single-cyclic.prm")
     text = open(source).read()
@@ -212,6 +237,53 @@ def make_sweep_prm(f_b, f_m, directory, quick, model):
     return name, prm, out
 
 
+def make_detailed_sweep_prm(f_b, f_m, directory, quick):
+    """The sweep pair for the detailed model: contrib/study/
+    sweep-detailed.prm with the unit and mortar inputs of sweep_inputs()."""
+    source = os.path.join(here, "sweep-detailed.prm")
+    text = open(source).read()
+    name = f"sweep-fb{f_b:g}-fm{f_m:g}"
+    out = os.path.join(directory, name)
+    text = set_entry(text, "Output directory", out, "top")
+    x = sweep_inputs(f_b, f_m)
+    h_b = float(get_in(text, ["Wallette"], "Brick height"))
+    h_m = float(get_in(text, ["Wallette"], "Joint thickness"))
+    target = sweep_target(x["f_b"], x["E_m"], h_b, h_m)
+    step = SWEEP_QUICK_STEP if quick else SWEEP_STEP
+    settings = {"Target strain": f"{target:.4g}",
+                "Number of steps": str(math.ceil(target / step))}
+    if quick:
+        settings.update({"Elements along the length": "2",
+                         "Elements along the width": "1",
+                         "Elements along the height": "1"})
+    for key, value in settings.items():
+        text, _ = set_in(text, ["Wallette"], key, value)
+    brick = ["Brick material", "Damage plasticity"]
+    for key, value in (("Compressive strength", x["f_bc"]),
+                       ("Tensile strength", x["f_bt"]),
+                       ("Young's modulus", x["E_b"]),
+                       ("Poisson's ratio", x["nu_b"]),
+                       ("Tensile fracture energy", x["G_bt"]),
+                       ("Compressive fracture energy", x["G_bc"])):
+        text, _ = set_in(text, brick, key, f"{value:.6g}")
+    mortar = ["Mortar material", "Mortar"]
+    for key, value in (("Compressive strength", x["f_m"]),
+                       ("Tensile strength", x["f_mt"]),
+                       ("Tensile fracture energy", x["G_mt"]),
+                       ("Young's modulus", x["E_m"]),
+                       ("Poisson's ratio", x["nu_m"])):
+        text, _ = set_in(text, mortar, key, f"{value:.6g}")
+    inputs = ", ".join(f"{k} = {v:.4g}" for k, v in x.items())
+    header = (f"# Study sweep pair {name}: {os.path.relpath(source, root)}, "
+              f"monotonic to strain {target:.4g}, model detailed"
+              f"{' (--quick)' if quick else ''}, written by "
+              f"contrib/study/run.\n# inputs (SI, sweep_inputs()): {inputs}\n")
+    prm = os.path.join(directory, name + ".prm")
+    with open(prm, "w") as f:
+        f.write(header + text)
+    return name, prm, out
+
+
 def set_entry(text, name, value, where):
     """Replace the value of `set NAME = ...' (the first such line) keeping
     its indentation and comment, or add it after `set Analysis' (top-level
@@ -249,7 +321,7 @@ def make_prm(thickness, seed, directory, quick, model="simplified"):
         text = set_entry(text, "Elements along the length",
                          QUICK_LENGTH[thickness], "wallette")
     if model != "simplified":
-        text, _ = set_in(text, ["Wallette"], MODEL_ENTRY, model)
+        text = detailed_specimen(text, model)
     # failure.png of every specimen (doc/brickwork.md, `failure plot')
     listed = get_in(text, ["Postprocess", "Wallette"],
                     "List of postprocessors") or \
@@ -269,6 +341,50 @@ def make_prm(thickness, seed, directory, quick, model="simplified"):
     with open(prm, "w") as f:
         f.write(header + text)
     return name, prm, out
+
+
+def top_block(text, name):
+    """(start, end) of the top-level `subsection NAME' ... `end' block of a
+    parameter file (end after the newline), or None."""
+    lines = text.split("\n")
+    start, depth, offset = None, 0, 0
+    for line in lines:
+        n = len(line) + 1
+        if re.match(r"^\s*subsection\s+", line):
+            if depth == 0 and re.match(r"^subsection\s+" + re.escape(name) +
+                                       r"\s*$", line):
+                start = offset
+            depth += 1
+        elif re.match(r"^\s*end\s*$", line):
+            depth -= 1
+            if depth == 0 and start is not None:
+                return start, min(offset + n, len(text))
+        offset += n
+    return None
+
+
+def detailed_specimen(text, model):
+    """A cyclic example turned into the detailed model: if it does not
+    select the model itself, `Model = detailed' in subsection Wallette and
+    the mortar law and the bond interfaces of contrib/study/
+    sweep-detailed.prm (f_m = 5 MPa, composite bond with friction), and
+    the units' `Tension-compression interaction'; the example's unit
+    strength (20 MPa) and its loading are kept."""
+    if get_in(text, ["Wallette"], MODEL_ENTRY) == model:
+        return text
+    text, _ = set_in(text, ["Wallette"], MODEL_ENTRY, model)
+    text, _ = set_in(text, ["Brick material", "Damage plasticity"],
+                     "Tension-compression interaction", "true")
+    detailed = open(os.path.join(here, "sweep-detailed.prm")).read()
+    for block in ("Mortar material", "Interface law"):
+        new = top_block(detailed, block)
+        new_text = detailed[new[0]:new[1]] if new else ""
+        old = top_block(text, block)
+        if old:
+            text = text[:old[0]] + new_text + text[old[1]:]
+        else:
+            text = text.rstrip("\n") + "\n\n" + new_text
+    return text
 
 
 def last_curve_line(out):
@@ -307,7 +423,7 @@ def main():
     p.add_argument("--thickness", default=",".join(THICKNESSES))
     p.add_argument("--seeds", default="1,2,3")
     p.add_argument("--part", default="specimens,sweep")
-    p.add_argument("--model", default="simplified",
+    p.add_argument("--model", default="detailed",
                    choices=("simplified", "detailed"))
     p.add_argument("--report-only", action="store_true")
     p.add_argument("--no-setup", action="store_true")
@@ -335,8 +451,9 @@ def main():
 
     runs = []
     if "specimens" in parts:
+        # seed by seed, so that a study cut short has every thickness
         runs += [make_prm(t, s, directory, args.quick, args.model)
-                 for t in thicknesses for s in seeds]
+                 for s in seeds for t in thicknesses]
     if "sweep" in parts:
         runs += [make_sweep_prm(f_b, f_m, directory, args.quick, args.model)
                  for f_b in SWEEP_FB for f_m in SWEEP_FM]
