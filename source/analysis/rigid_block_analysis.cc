@@ -1,3 +1,4 @@
+#include <masonry/adaptation/crack_refinement.h>
 #include <masonry/adaptation/optimiser.h>
 #include <masonry/analysis/rigid_block_analysis.h>
 #include <masonry/core/json.h>
@@ -236,7 +237,10 @@ namespace masonry
         rigid_blocks::postprocess::Interface>::create_selected(prm);
       optimiser      = plugins::Registry<adaptation::Optimiser>::create(prm);
       optimiser_name = plugins::Registry<adaptation::Optimiser>::selected(prm);
-      if (optimiser->active())
+      // crack refinement moves no line: no minimum block size
+      if (optimiser->active() &&
+          dynamic_cast<const adaptation::CrackRefinement *>(optimiser.get()) ==
+            nullptr)
         {
           plugins::ParsePathScope scope(
             adaptation::Optimiser::registry_section);
@@ -274,7 +278,13 @@ namespace masonry
     RigidBlockAnalysis::run(RunContext &context)
     {
       if (optimiser && optimiser->active())
-        adapt(context);
+        {
+          if (dynamic_cast<const adaptation::CrackRefinement *>(
+                optimiser.get()) != nullptr)
+            refine_at_cracks(context);
+          else
+            adapt(context);
+        }
       analyse(context);
     }
 

@@ -110,6 +110,22 @@ namespace masonry
         return solution.objective * force_scale * settlement_scale;
       }
 
+      double
+      evaluate_cracks(RunContext          &context,
+                      std::vector<double> &activity) override
+      {
+        build_model();
+        const auto         problem  = assemble();
+        const lp::Solution solution = solve(problem.lp, context);
+        activity.assign(model->interfaces().size(), 0.);
+        if (solution.status != lp::Status::optimal)
+          return -std::numeric_limits<double>::infinity();
+        activity = crack_activity(rigid_blocks::motion_from_solution(
+                                    problem, solution.x, settlement_scale),
+                                  settlement_function());
+        return solution.objective * force_scale * settlement_scale;
+      }
+
       void
       analyse(RunContext &context) override
       {

@@ -8,7 +8,13 @@ this runs
   * adaptation: every optimiser x `lines'/`vertices' genes x start meshes
     3x4 and 6x8 per half, one thread, `Stall generations = 0', stopped after
     a CPU budget (--budget times the CPU time of uniform 12x16, at least
-    --min-budget s; RLIMIT_CPU ends the run).
+    --min-budget s; RLIMIT_CPU ends the run);
+  * crack refinement (`Optimiser = crack refinement'): the settings of
+    CRACK (start mesh, stages, marked fraction, marking), each run to its
+    end (stopped at --uniform-limit CPU s).
+
+--strategies selects what runs: `all' (default), or a comma-separated
+subset of `uniform', `optimisers', `crack'.
 
 The time axis is the CPU time (user + sys) of the masonry process, start-up
 included: the machine this runs on is usually shared, so wall times are
@@ -42,10 +48,16 @@ CASES = {
 }
 OPTIMISERS = ["genetic", "differential evolution", "cmaes", "particle swarm"]
 GENERATION = re.compile(r"^\s*generation (\d+): best (\S+), mean \S+, (\d+) evaluations")
+STAGE = re.compile(r"^\s*stage (\d+): (\d+) blocks .*, best (\S+),")
+# crack refinement: (start mesh, stages, marked fraction, marking)
+CRACK = [((3, 4), 3, 0.5, "per direction"), ((3, 4), 3, 0.6, "per direction"),
+         ((3, 4), 4, 0.5, "per direction"), ((3, 4), 3, 0.7, "per direction"),
+         ((6, 8), 1, 0.5, "per direction"), ((6, 8), 1, 0.6, "per direction"),
+         ((3, 4), 3, 0.6, "joint")]
 TICK = os.sysconf("SC_CLK_TCK")
 
 
-def write_prm(case, nu, nv, out, optimiser="none", genes="lines"):
+def write_prm(case, nu, nv, out, optimiser="none", genes="lines", crack=None):
     """The example with nu x nv blocks per half, no picture, only the crack
     list as output, and the adaptation settings."""
     text = open(os.path.join(ROOT, "prm", "examples", CASES[case][0])).read()
@@ -69,7 +81,12 @@ subsection Adaptation
   set Stall generations = 0
   set Seed              = 1
   set Threads           = 1
-end
+""" + ("" if crack is None else f"""  subsection Crack refinement
+    set Stages          = {crack[0]}
+    set Marked fraction = {crack[1]}
+    set Marking         = {crack[2]}
+  end
+""") + """end
 """
     os.makedirs(out, exist_ok=True)
     path = out.rstrip("/") + ".prm"
@@ -107,6 +124,10 @@ def run(masonry, prm, limit):
         if m:
             points.append((cpu_of(p.pid), int(m.group(1)), int(m.group(3)),
                            float(m.group(2))))
+        m = STAGE.match(line)
+        if m:
+            points.append((cpu_of(p.pid), int(m.group(1)), int(m.group(2)),
+                           float(m.group(3))))
     _, status, usage = os.wait4(p.pid, 0)
     p.returncode = os.waitstatus_to_exitcode(status)
     cpu = usage.ru_utime + usage.ru_stime
@@ -135,6 +156,13 @@ def main():
     ap.add_argument("--budget", type=float, default=1.0,
                     help="adaptation budget, times the CPU s of uniform 12x16")
     ap.add_argument("--min-budget", type=float, default=5.0)
+    ap.add_argument("--optimiser-runs", default="",
+                    help="only these optimiser runs, e.g. "
+                    "'genetic:lines:3x4,cmaes:vertices:3x4' (default: every "
+                    "optimiser x lines/vertices x 3x4/6x8)")
+    ap.add_argument("--strategies", default="all",
+                    help="all, or a comma-separated subset of uniform, "
+                    "optimisers, crack")
     args = ap.parse_args()
     os.makedirs(args.out, exist_ok=True)
     uniform_meshes = [(3, 4), (6, 8), (12, 16), (24, 32)]
@@ -142,6 +170,8 @@ def main():
     uniform_meshes = uniform_meshes[:uniform_meshes.index(finest) + 1]
     if args.quick:
         uniform_meshes = [(3, 4), (6, 8)]
+    strategies = (["uniform", "optimisers", "crack"] if args.strategies == "all"
+                  else args.strategies.split(","))
     rows = []  # case, strategy, start, genes, cpu, wall, generation, evaluations, best, final
     for case in args.cases.split(","):
         uniform = {}
@@ -164,6 +194,12 @@ def main():
         runs = [("genetic", "lines", (3, 4))] if args.quick else [
             (o, g, s) for s in [(3, 4), (6, 8)] for g in ["lines", "vertices"]
             for o in OPTIMISERS]
+        if args.optimiser_runs:
+            runs = [(o, g, tuple(int(x) for x in m.split("x")))
+                    for o, g, m in (r.split(":") for r in
+                                    args.optimiser_runs.split(","))]
+        if "optimisers" not in strategies:
+            runs = []
         for optimiser, genes, (nu, nv) in runs:
             name = f"{case}_{optimiser.replace(' ', '_')}_{genes}_{nu}x{nv}"
             prm = write_prm(case, nu, nv, os.path.join(args.out, name),
@@ -178,6 +214,33 @@ def main():
                          "done" if ok else "stopped"])
             print(f"{name}: best {last[3]:.6g} J after {last[2]} evaluations, "
                   f"{cpu:.2f} CPU s", flush=True)
+        crack = [((3, 4), 2, 0.6, "joint")] if args.quick else CRACK
+        for (nu, nv), stages, fraction, marking in (
+                crack if "crack" in strategies else []):
+            label = f"S{stages} f{fraction} {marking}"
+            name = (f"{case}_crack_{nu}x{nv}_{stages}_{fraction}_"
+                    f"{marking.replace(' ', '_')}")
+            out = os.path.join(args.out, name)
+            prm = write_prm(case, nu, nv, out, "crack refinement",
+                            crack=(stages, fraction, marking))
+            points, cpu, wall, ok, log = run(args.masonry, prm,
+                                             args.uniform_limit)
+            value = objective(out) if ok else math.nan
+            blocks = json.load(open(os.path.join(out, "summary.json")))[
+                "n_blocks"] if ok else 0
+            for c, g, b, best in points:
+                rows.append([case, "crack refinement", f"{nu}x{nv}", label,
+                             f"{c:.3f}", "", g, b, f"{best:.10g}",
+                             "generation"])
+            rows.append([case, "crack refinement", f"{nu}x{nv}", label,
+                         f"{cpu:.3f}", f"{wall:.2f}", len(points), blocks,
+                         f"{value:.10g}", "done" if ok else "stopped"])
+            if ok:
+                rows.append([case, "crack refinement", f"{nu}x{nv}", label,
+                             f"{cpu:.3f}", "", len(points), blocks,
+                             f"{value:.10g}", "generation"])
+            print(f"{name}: {value:.6g} J with {blocks} blocks, {cpu:.2f} CPU s, "
+                  f"{wall:.1f} s wall", flush=True)
     with open(os.path.join(args.out, "results.csv"), "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(["case", "strategy", "start_mesh", "genes", "cpu_seconds",
@@ -195,16 +258,17 @@ def report(out, rows):
     cases = list(dict.fromkeys(r[0] for r in rows))
     fig, axes = plt.subplots(1, len(cases), figsize=(6.5 * len(cases), 4.6),
                              squeeze=False)
-    md = ["| case | strategy | start mesh | genes | evaluations | best objective (J) "
-          "| CPU s | CPU s to uniform 6x8 | CPU s to uniform 12x16 |",
-          "|---|---|---|---|---:|---:|---:|---:|---:|"]
+    md = ["| case | strategy | start mesh | genes / settings | evaluations "
+          "(crack: final blocks) | best objective (J) | CPU s | wall s "
+          "| CPU s to uniform 6x8 | CPU s to uniform 12x16 |",
+          "|---|---|---|---|---:|---:|---:|---:|---:|---:|"]
     for ax, case in zip(axes[0], cases):
         uni = [r for r in rows if r[0] == case and r[1] == "uniform"]
         done = {r[2]: (float(r[8]), float(r[4])) for r in uni if r[9] == "done"}
         for r in uni:
             md.append(f"| {case} | uniform | {r[2]} | | 1 | "
                       + (f"{float(r[8]):.6g}" if r[9] == "done" else "not finished")
-                      + f" | {float(r[4]):.2f} | | |")
+                      + f" | {float(r[4]):.2f} | {float(r[5]):.2f} | | |")
         xs = [done[m][1] for m in done]
         ax.plot(xs, [done[m][0] for m in done], "ko-", lw=2, label="uniform", zorder=5)
         for m in done:
@@ -223,16 +287,23 @@ def report(out, rows):
                 return "not reached"
             t6 = first_reaching(done["6x8"][0]) if "6x8" in done else ""
             t12 = first_reaching(done["12x16"][0]) if "12x16" in done else ""
+            wall = f"{float(end[5]):.2f}" if end[5] else ""
             md.append(f"| {case} | {s[0]} | {s[1]} | {s[2]} | {end[7]} | "
-                      f"{float(end[8]):.6g} | {float(end[4]):.2f} | {t6} | {t12} |")
+                      f"{float(end[8]):.6g} | {float(end[4]):.2f} | {wall} "
+                      f"| {t6} | {t12} |")
             if gens:
                 x = [float(r[4]) for r in gens] + [float(end[4])]
                 y = [float(r[8]) for r in gens] + [float(gens[-1][8])]
-                colour = "C%d" % (OPTIMISERS.index(s[0])
-                                  if s[0] in OPTIMISERS else len(OPTIMISERS))
-                ax.step(x, y, "-" if s[2] == "lines" else ":", where="post",
-                        color=colour, lw=1 if s[1] == "3x4" else 2.5,
-                        label=f"{s[0]}, {s[2]}, from {s[1]}")
+                if s[0] in OPTIMISERS:
+                    ax.step(x, y, "-" if s[2] == "lines" else ":",
+                            where="post", color="C%d" % OPTIMISERS.index(s[0]),
+                            lw=1 if s[1] == "3x4" else 2.5,
+                            label=f"{s[0]}, {s[2]}, from {s[1]}")
+                else:
+                    crack = [t for t in strategies if t[0] not in OPTIMISERS]
+                    ax.step(x[:-1], y[:-1], "-", where="post", marker="s",
+                            ms=3, color="C%d" % (4 + crack.index(s) % 6),
+                            lw=1.5, label=f"{s[0]}, {s[2]}, from {s[1]}")
         if "12x16" in done:
             t12, f12 = done["12x16"][1], done["12x16"][0]
             ax.axvline(t12 / 5, color="r", lw=0.8, ls=":")

@@ -14,6 +14,7 @@
 
 #include <deal.II/base/function_parser.h>
 
+#include <functional>
 #include <memory>
 
 namespace masonry
@@ -92,6 +93,30 @@ namespace masonry
       /** Name and unit of the quantity evaluate() returns. */
       virtual std::string
       fitness_name() const = 0;
+
+      /**
+       * evaluate(), and the crack activity of the model it solved into
+       * @p activity (crack_activity(): two numbers per interface), for
+       * `Optimiser = crack refinement`. By default an error: only analyses that
+       * override it (`settlement`) can be refined at their cracks.
+       */
+      virtual double
+      evaluate_cracks(RunContext &context, std::vector<double> &activity);
+
+      /**
+       * The crack activity of every interface of the current model under
+       * the block motion @p motion and the ground motion @p ground (zero
+       * if null), two numbers per interface k: [2k] Σ over its contact
+       * points of tributary area × |jump|, [2k + 1] Σ area × |jump − the
+       * mean jump of its intrados or extrados points| (how much the jump
+       * varies along the interface), m³ per unit of the motion.
+       */
+      std::vector<double>
+      crack_activity(
+        const rigid_blocks::Motion                                     &motion,
+        const std::function<dealii::Tensor<1, 3>(const dealii::Point<3> &,
+                                                 const std::string &)> &ground)
+        const;
 
       /**
        * The parameter meshes of the `lines' genes: per patch n_u − 1 genes
@@ -225,6 +250,16 @@ namespace masonry
       /** Run the optimiser and set mesh_vertices to the best mesh. */
       void
       adapt(RunContext &context);
+
+      /**
+       * `Optimiser = crack refinement` (source/adaptation/
+       * crack_refinement.cc): from the uniform mesh, `Stages` times solve
+       * (evaluate_cracks()) and split the parameter strips where the
+       * mechanism cracks most; set mesh_vertices (and the numbers of
+       * blocks in `options`) to the last mesh.
+       */
+      void
+      refine_at_cracks(RunContext &context);
 
       /**
        * Parameter-space vertices of every patch (empty: uniform), used by

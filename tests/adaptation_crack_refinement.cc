@@ -1,0 +1,118 @@
+/**
+ * `Optimiser = crack refinement` (settlement):
+ *
+ * - semicircular arch (mean radius 5 m, thickness 1 m, no tension no
+ *   sliding), one springing settles 1 cm, from 2 blocks per half, 5 stages:
+ *   the objective never decreases from one stage to the next and never
+ *   exceeds that of the uniform mesh of the finest spacing (64 blocks per
+ *   half), of which every mesh is a subset (nested meshes: theory); the
+ *   final mesh's work is within 0.5 % of a uniform mesh of 512 blocks (an
+ *   independent computation) with fewer than a third of the blocks of the
+ *   uniform mesh of the same finest spacing: the lines went to the hinges;
+ * - barrel vault with Mohr–Coulomb joints and a settlement varying along
+ *   its length (every strip cracks): `Marked fraction = 1' splits every
+ *   strip, so one stage from 2 x 2 per half gives the uniform 4 x 4 mesh,
+ *   and its objective equals that of uniform 4 x 4 to 1e-8; with 0.5 the
+ *   objectives of 2 stages never decrease and the final one stays at or
+ *   below uniform 8 x 8.
+ */
+#include <deal.II/base/mpi.h>
+
+#include "vault_tests.h"
+
+using namespace vault_tests;
+
+namespace
+{
+  std::string
+  refinement(const unsigned int stages, const double fraction)
+  {
+    std::ostringstream s;
+    s << "subsection Adaptation\n  set Optimiser = crack refinement\n"
+      << "  subsection Crack refinement\n    set Stages = " << stages
+      << "\n    set Marked fraction = " << fraction << "\n  end\nend\n";
+    return s.str();
+  }
+
+  std::string
+  barrel(const unsigned int n)
+  {
+    return "set Analysis = settlement\n"
+           "subsection Geometry model\n  set Model name = barrel vault\n"
+           "  set Thickness = 0.3\n  set Density = 2000\n"
+           "  subsection Barrel vault\n    set Shape = circular\n"
+           "    set Span = 6\n    set Rise = 3\n    set Length = 6\n"
+           "  end\nend\n"
+           "subsection Settlement\n  set Blocks along u = " +
+           std::to_string(n) + "\n  set Blocks along v = " + std::to_string(n) +
+           "\n  set Settlement = 0; 0; -0.01*y/6\n"
+           "  set Write picture = false\nend\n"
+           "subsection Interface model\n  set Model = mohr coulomb\n"
+           "  subsection Mohr coulomb\n    set Cohesion = 2e4\n"
+           "    set Tensile strength = 3e4\n  end\nend\n";
+  }
+
+  /** Whether the stage objectives never decrease (1e-9 relative). */
+  bool
+  monotone(const masonry::Json &adaptation)
+  {
+    const auto &s  = adaptation.at("stages");
+    bool        ok = s.size() > 1;
+    for (unsigned int k = 1; k < s.size(); ++k)
+      {
+        const double a = s.at(k - 1).at("fitness").as_number();
+        const double b = s.at(k).at("fitness").as_number();
+        ok             = ok && b >= a - 1e-9 * std::abs(a);
+      }
+    return ok;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const double                             R = 5;
+
+  const double fine =
+    run("fine", arch_prm(R, 1, 256, "0; 0; -0.01")).at("objective").as_number();
+  const double finest = run("finest", arch_prm(R, 1, 64, "0; 0; -0.01"))
+                          .at("objective")
+                          .as_number();
+  const masonry::Json a =
+    run("arch", arch_prm(R, 1, 2, "0; 0; -0.01") + refinement(5, 0.5));
+  const auto  &aa = a.at("adaptation");
+  const double w  = a.at("objective").as_number();
+  check(aa.at("stages").size() == 5, "arch: 5 stages solved");
+  check(monotone(aa), "arch: the objective never decreases between stages");
+  check(w >= aa.at("stages").at(4).at("fitness").as_number() - 1e-9 * w,
+        "arch: the final mesh is at least as good as the last stage's");
+  check(w <= finest * (1 + 1e-9),
+        "arch: at most the objective of uniform 64 blocks per half");
+  check(relative(w, fine) < 5e-3,
+        "arch: work within 0.5 % of 512 uniform blocks");
+  check(a.at("n_blocks").as_number() < 128 / 3.,
+        "arch: fewer than a third of the blocks of uniform 64 per half");
+
+  const double uniform4 =
+    run("barrel_4", barrel(4)).at("objective").as_number();
+  const masonry::Json b  = run("barrel_all", barrel(2) + refinement(1, 1));
+  const auto         &ba = b.at("adaptation");
+  check(ba.at("blocks_along_u").as_number() == 4 &&
+          ba.at("blocks_along_v").as_number() == 4,
+        "barrel, marked fraction 1: every strip split (4 x 4 per half)");
+  check(relative(b.at("objective").as_number(), uniform4) < 1e-8,
+        "barrel, marked fraction 1: the objective of uniform 4 x 4 (1e-8)");
+  const double uniform8 =
+    run("barrel_8", barrel(8)).at("objective").as_number();
+  const masonry::Json c  = run("barrel_half", barrel(2) + refinement(2, 0.5));
+  const double        wc = c.at("objective").as_number();
+  check(monotone(c.at("adaptation")),
+        "barrel, marked fraction 0.5: the objective never decreases");
+  check(wc <= uniform8 * (1 + 1e-9) &&
+          wc >=
+            c.at("adaptation").at("stages").at(1).at("fitness").as_number() -
+              1e-9 * wc,
+        "barrel, marked fraction 0.5: between the last stage and uniform "
+        "8 x 8");
+}
