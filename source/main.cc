@@ -5,7 +5,8 @@
  * answered here (the dynamic loader's relocation of the ~200 libraries
  * behind libmasonry, deal.II, Trilinos, PETSc, OpenCASCADE, Open MPI, is
  * most of the start-up time); everything else loads libmasonry with
- * dlopen() and calls masonry_main() (MPI_Init, run_application()).
+ * dlopen() and calls masonry_main() (MPI_Init, run_application()), or for
+ * `--validate' outside mpirun masonry_validate() (no MPI_Init).
  * Measurements: contrib/benchmarks/startup.
  */
 #include <masonry/config.h>
@@ -107,11 +108,22 @@ main(int argc, char **argv)
                    errors.c_str());
       return 1;
     }
+  // `--validate FILE' of a process not started by mpirun needs no MPI:
+  // masonry_validate() checks the file without MPI_Init
+  bool validate = false;
+  for (int i = 1; i < argc; ++i)
+    if (std::strcmp(argv[i], "--defaults") != 0)
+      {
+        validate = std::strcmp(argv[i], "--validate") == 0;
+        break;
+      }
   using Main       = int (*)(int, char **);
-  const auto entry = reinterpret_cast<Main>(::dlsym(library, "masonry_main"));
+  const auto entry = reinterpret_cast<Main>(
+    ::dlsym(library,
+            validate && !under_mpi() ? "masonry_validate" : "masonry_main"));
   if (!entry)
     {
-      std::fprintf(stderr, "masonry: libmasonry.so has no masonry_main\n");
+      std::fprintf(stderr, "masonry: libmasonry.so has no entry point\n");
       return 1;
     }
   return entry(argc, argv);

@@ -13,6 +13,13 @@ for prm in "$2"/*.prm; do
     failed=1
   fi
 done
+# --validate outside mpirun starts no MPI: it answers even where MPI_Init
+# would abort (an Open MPI transport that does not exist)
+prm=$(ls "$2"/*.prm | head -1)
+if ! out=$(OMPI_MCA_pml=no-such-transport "$masonry" --validate "$prm" 2>&1); then
+  echo "FAILED: --validate with MPI unusable: $out"
+  failed=1
+fi
 if [[ $n == 0 ]]; then
   echo "FAILED: no examples in $2"
   exit 1

@@ -462,7 +462,12 @@ namespace masonry
   run_application(const std::vector<std::string> &all_arguments,
                   const MPI_Comm                  comm)
   {
-    const bool  root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+    // without MPI_Init (masonry_validate(): --validate of a single
+    // process) this process is the only rank
+    int mpi_running = 0;
+    MPI_Initialized(&mpi_running);
+    const bool root =
+      !mpi_running || dealii::Utilities::MPI::this_mpi_process(comm) == 0;
     std::string option;
     try
       {
@@ -564,4 +569,27 @@ masonry_main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv);
   const std::vector<std::string>           arguments(argv + 1, argv + argc);
   return masonry::run_application(arguments, MPI_COMM_WORLD);
+}
+
+/**
+ * The entry point of `masonry --validate FILE` in a process that no MPI
+ * launcher started: run_application() without MPI_Init. Reading and
+ * checking a file needs no communication, and MPI_Init (with the
+ * libraries deal.II initialises with it: PETSc, SLEPc, p4est, Zoltan) and
+ * the Open MPI daemon a singleton starts were a third of the CPU time of
+ * such a call (contrib/benchmarks/startup). Any other command goes to
+ * masonry_main().
+ */
+extern "C" int
+masonry_validate(int argc, char **argv)
+{
+  std::vector<std::string> arguments;
+  for (int i = 1; i < argc; ++i)
+    if (std::string(argv[i]) != "--defaults")
+      arguments.emplace_back(argv[i]);
+  if (arguments.empty() || arguments[0] != "--validate")
+    return masonry_main(argc, argv);
+  return masonry::run_application(std::vector<std::string>(argv + 1,
+                                                           argv + argc),
+                                  MPI_COMM_SELF);
 }

@@ -83,8 +83,11 @@ namespace masonry
   OutputDirectory::check(const std::string &path, const MPI_Comm comm)
   {
     namespace fs = std::filesystem;
+    // also called without MPI_Init (masonry --validate): one rank then
+    int mpi_running = 0;
+    MPI_Initialized(&mpi_running);
     std::string error;
-    if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
+    if (!mpi_running || dealii::Utilities::MPI::this_mpi_process(comm) == 0)
       {
         const std::string directory =
           path.empty() || path.back() == '/' ? path : path + "/";
@@ -105,7 +108,8 @@ namespace masonry
         for (auto it = created.rbegin(); it != created.rend(); ++it)
           fs::remove(*it, ec);
       }
-    error = dealii::Utilities::MPI::broadcast(comm, error, 0);
+    if (mpi_running)
+      error = dealii::Utilities::MPI::broadcast(comm, error, 0);
     AssertThrow(error.empty(), ExcParameter("Output directory", error));
   }
 
