@@ -1,0 +1,385 @@
+/**
+ * @file
+ * Brick material `damage plasticity`: effective-stress plasticity with
+ * separate tension and compression damage for bricks under cyclic
+ * compression.
+ *
+ * The formulation (documented for users in the registration text in
+ * source/brickwork/laws/damage_plasticity.cc and
+ * in doc/brickwork.md):
+ * - effective stress s = C0 : (e - e_p), split spectrally into s+ (positive
+ *   principal stresses) and s- = s - s+;
+ * - equivalent effective stresses, positively homogeneous of degree one:
+ *   tau_c = (sqrt(3 J2(s-)) + alpha I1(s-)) / (1 - alpha) (Lubliner et al.
+ *   1989, compressive part; |s| in uniaxial compression) and tau_t = the
+ *   largest principal effective stress (Rankine);
+ * - uniaxial envelopes sigma(e) of the total strain e, decomposed as
+ *   sigma = (1 - d) E0 (e - e_p(e)) with e_p = b (e - sigma / E0) (Birtel &
+ *   Mark 2006), the damage capped at d_max and the rest taken by e_p;
+ * - the explicit update of Faria, Oliver & Cervera (1998) / Petracca et al.
+ *   (2022, ASDConcrete3D) in a form exact in uniaxial stress: the envelope
+ *   strain reached is e = e_p(kappa_old) + tau / E0, and on loading the
+ *   plastic strain grows along C0^-1 : s-+ so that the new s-+ is the trial
+ *   one scaled to the envelope's effective stress; no local iterations;
+ * - sigma = (1 - d_t) s+ + (1 - d_c) s-: tension damage does not act on
+ *   closed cracks (stiffness recovery), unloading goes with (1 - d) E0
+ *   towards the plastic strain;
+ * - softening regularised with the fracture energies and the element's
+ *   characteristic length (crack band);
+ * - optional viscous regularisation of both damages.
+ * The tangent is the central-difference derivative of this stress update
+ * (consistent with it to O(h^2)); cells that stay elastic use C0.
+ *
+ * Options (off by default, so the law above is unchanged):
+ * - `Tension-compression interaction': the nominal utilisations u_c =
+ *   (1 - d_c) tau_c / f_c, u_t = (1 - d_t) tau_t / f_t and m = min(u_c,
+ *   u_t, 1/2); both measures are divided by 1 - m. Where compression
+ *   dominates (u_c >= u_t) the compressive criterion is tau_c / T_c + u_t
+ *   <= 1, Lee & Fenves' beta <s_max> term with beta = T_c / f_t, and the
+ *   tensile one u_t <= 1/2 is not reached first; where tension dominates,
+ *   symmetrically. A unit fails on t / f_t + s / f_c = 1 in the mode that
+ *   dominates, pure tension never touches the compressive state and pure
+ *   compression never the tensile one. The return scales s- (or s+) by the
+ *   k that brings the non-homogeneous measure k tau / (1 - min(k a, M))
+ *   onto the envelope's threshold (scale_onto());
+ * - `Confinement coefficient' k: Lubliner's gamma <-s_max> term, gamma =
+ *   k (1 - alpha) - (1 + 2 alpha), when all principal stresses are
+ *   compressive, so that |sigma_1| = f_c + k p under (-sigma_1, -p, -p);
+ * - `Compressive softening' = false: the envelope stays at f_c after its
+ *   peak (plugin `mortar', which only changes the defaults);
+ * - `Plastic Poisson's ratio' nu_p: the compressive plastic strain grows
+ *   along C_p^-1 : s- (compliance with E0, nu_p) instead of C0^-1 : s-,
+ *   with the multiplier from a scalar root search (flow()); a confined
+ *   mortar keeps expanding laterally only with nu_p > p / (|sigma_1| + p).
+ */
+#ifndef masonry_brickwork_laws_damage_plasticity_h
+#define masonry_brickwork_laws_damage_plasticity_h
+
+#include <masonry/brickwork/brick_material.h>
+
+namespace masonry
+{
+  namespace brickwork
+  {
+    using dealii::SymmetricTensor;
+
+    /**
+     * Defaults of the entries that differ between the two plugins of this
+     * file (`damage plasticity` for units, `mortar` for a meshed mortar
+     * layer).
+     */
+    struct DamagePlasticityDefaults
+    {
+      const char *E, *nu, *f_c, *eps_c, *f_t, *G_f, *softening, *nu_p, *what;
+    };
+
+
+    /** See the file documentation. */
+    class DamagePlasticityBrick : public BrickMaterial
+    {
+    public:
+      /** A point of a uniaxial envelope. */
+      struct EnvelopePoint
+      {
+        /** Stress (Pa, positive), plastic strain, damage. */
+        double stress = 0, plastic = 0, damage = 0;
+      };
+
+      /**
+       * The state of a point as this law uses it; the model stores it as
+       * the flat array of state_variables() (pack(), unpack()).
+       */
+      struct State
+      {
+        /** Plastic strain (dimensionless). */
+        SymmetricTensor<2, 3> plastic_strain;
+        /** Damage thresholds in tension and compression (effective stress,
+         * Pa). */
+        double threshold_t = 0, threshold_c = 0;
+        /** Equivalent plastic strains reached on the two envelopes. */
+        double kappa_t = 0, kappa_c = 0;
+        /** Damage in tension and compression (0 intact to 1), after the
+         * viscous regularisation. */
+        double damage_t = 0, damage_c = 0;
+      };
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm)
+      {
+        declare(prm,
+                {"10e9",
+                 "0.15",
+                 "20e6",
+                 "0.004",
+                 "2e6",
+                 "80",
+                 "true",
+                 "elastic",
+                 "enlarged bricks"});
+      }
+
+      /** The entries, with the plugin's @p defaults. */
+      static void
+      declare(dealii::ParameterHandler       &prm,
+              const DamagePlasticityDefaults &defaults);
+
+      void
+      parse_parameters(dealii::ParameterHandler &prm) override;
+
+      bool
+      is_linear() const override
+      {
+        return false;
+      }
+
+      std::vector<StateVariable>
+      state_variables() const override;
+
+      std::vector<std::string>
+      reported_quantities() const override
+      {
+        return {"damage_tension", "damage_compression", "plastic_strain_norm"};
+      }
+
+      void
+      report(ConstStateView            state,
+             dealii::ArrayView<double> values) const override;
+
+      std::vector<std::string>
+      damage_names() const override
+      {
+        return {"damage_tension", "damage_compression"};
+      }
+
+      void
+      damages(ConstStateView            state,
+              dealii::ArrayView<double> values) const override;
+
+      double
+      youngs_modulus() const override
+      {
+        return E;
+      }
+
+      double
+      compressive_strength() const override
+      {
+        return f_c;
+      }
+
+      double
+      tensile_strength() const override
+      {
+        return f_t;
+      }
+
+      double
+      tensile_fracture_energy() const override
+      {
+        return G_f;
+      }
+
+      std::vector<DerivedValue>
+      derived_values() const override;
+
+      double
+      poissons_ratio() const override
+      {
+        return nu;
+      }
+
+      void
+      check_point(const BrickPoint &point) const override;
+
+      bool
+      is_elastic(const SymmetricTensor<2, 3> &strain,
+                 ConstStateView               old_state,
+                 const BrickPoint            &point) const override;
+
+      void
+      evaluate(const SymmetricTensor<2, 3> &strain,
+               ConstStateView               old_state,
+               const BrickPoint            &point,
+               StateView                    updated_state,
+               SymmetricTensor<2, 3>       &stress,
+               SymmetricTensor<4, 3>       &tangent) const override;
+
+      void
+      update_state(const SymmetricTensor<2, 3> &strain,
+                   ConstStateView               old_state,
+                   const BrickPoint            &point,
+                   StateView                    updated_state,
+                   SymmetricTensor<2, 3>       &stress) const override;
+
+      void
+      evaluate_extrapolated(const SymmetricTensor<2, 3> &strain,
+                            ConstStateView               old,
+                            ConstStateView               older,
+                            const double                 ratio_t,
+                            const BrickPoint &,
+                            SymmetricTensor<2, 3> &stress,
+                            SymmetricTensor<4, 3> &tangent) const override;
+
+      void
+      extrapolated_stress(const SymmetricTensor<2, 3> &strain,
+                          ConstStateView               old,
+                          ConstStateView               older,
+                          const double                 ratio_t,
+                          const BrickPoint &,
+                          SymmetricTensor<2, 3> &stress) const override;
+
+    private:
+      /** Whether the point is intact and inside the initial elastic
+       * domain. */
+      bool
+      is_elastic(const SymmetricTensor<2, 3> &strain,
+                 const State                 &old,
+                 const BrickPoint            &point) const;
+
+      void
+      evaluate(const SymmetricTensor<2, 3> &strain,
+               const State                 &old,
+               const BrickPoint            &point,
+               State                       &updated,
+               SymmetricTensor<2, 3>       &stress,
+               SymmetricTensor<4, 3>       &tangent) const;
+
+      /** IMPL-EX stress and (if @p tangent) tangent, see
+       * evaluate_extrapolated(). */
+      void
+      extrapolated(const SymmetricTensor<2, 3> &strain,
+                   const State                 &old,
+                   const State                 &older,
+                   const double                 ratio_t,
+                   SymmetricTensor<2, 3>       &stress,
+                   SymmetricTensor<4, 3>       *tangent) const;
+
+      /**
+       * The compressive return with `Plastic Poisson's ratio' nu_p != nu:
+       * the plastic strain grows by lambda C_p^-1 : s- (C_p the compliance
+       * with E0 and nu_p), the effective stress by -lambda C0 : C_p^-1 : s-
+       * = -lambda (a_d dev(s-) + a_v vol(s-)), a_d = (1 + nu_p) / (1 + nu),
+       * a_v = (1 - 2 nu_p) / (1 - 2 nu); lambda is the root of "compressive
+       * measure of the new effective stress (with the interaction, if on,
+       * at the new damage 1 - @p intact_c) = @p T" on (0, 1 / a_d), where
+       * the deviator vanishes (false position, Illinois). On return @p
+       * plus,
+       * @p minus, @p tau_t and @p tau_c are those of the new effective
+       * stress.
+       */
+      void
+      flow(SymmetricTensor<2, 3> &minus,
+           const double           intact_c,
+           const double           d_t,
+           const double           phi,
+           const double           T,
+           State                 &updated,
+           SymmetricTensor<2, 3> &plus,
+           double                &tau_t,
+           double                &tau_c) const;
+
+      /** C0 : e. */
+      SymmetricTensor<2, 3>
+      effective(const SymmetricTensor<2, 3> &e) const;
+
+      /** C0^-1 : s. */
+      SymmetricTensor<2, 3>
+      compliance(const SymmetricTensor<2, 3> &s) const;
+
+      /**
+       * The positive part P(s) = sum h(s_i) n_i (x) n_i of @p s, where h is
+       * <x>+ blended over (0, delta = 0.001 f_t) by 2 x^2 / delta - x^3 /
+       * delta^2 (C1, exact outside the band): a principal stress that is
+       * zero at equilibrium (the free lateral directions of uniaxial
+       * loading) sits at the kink of the split, where Newton with a
+       * discontinuous tangent stalls. @p largest, if given, receives the
+       * largest principal value's positive part <s_1>+. If @p derivative
+       * is given, it receives dP/ds:
+       * sum h'(s_i) M_i (x) M_i + sum_{i<j} 2 theta_ij G_ij (x) G_ij, with
+       * M_i = n_i (x) n_i, G_ij = sym(n_i (x) n_j) and theta_ij the divided
+       * difference (h(s_i) - h(s_j)) / (s_i - s_j) (the mean slope for
+       * equal principal values).
+       */
+      SymmetricTensor<2, 3>
+      positive_part(const SymmetricTensor<2, 3> &s,
+                    SymmetricTensor<4, 3>       *derivative,
+                    double                      *largest = nullptr) const;
+
+      /** Spectral split of @p s and the equivalent stresses. */
+      void
+      split(const SymmetricTensor<2, 3> &s,
+            SymmetricTensor<2, 3>       &plus,
+            SymmetricTensor<2, 3>       &minus,
+            double                      &tau_t,
+            double                      &tau_c) const;
+
+      /**
+       * The share m = min(u_c, u_t, 1/2) of the tension-compression
+       * interaction: u_c = (1 - @p d_c) @p tau_c / f_c and u_t = (1 - @p
+       * d_t)
+       * @p tau_t / f_t are the nominal utilisations of the two strengths
+       * (scaled by the point's strength factor @p phi); both equivalent
+       * stresses are divided by 1 - m. 0 when the interaction is off.
+       */
+      double
+      interaction_share(const double tau_c,
+                        const double tau_t,
+                        const double d_c,
+                        const double d_t,
+                        const double phi) const;
+
+      /**
+       * The factor k in (0, 1] that scales the part @p tau (its measure) of
+       * the effective stress onto the threshold @p T when the measure is
+       * g(k) = k tau / (1 - min(k a, M)): a is the utilisation of this
+       * mode per unit of k, M = min(other utilisation, 1/2). g is
+       * continuous and increasing; on the branch k a >= M, k = T (1 - M) /
+       * tau, else k tau = T (1 - k a).
+       */
+      static double
+      scale_onto(const double tau, const double a, const double M, double T);
+
+      /** The compressive envelope at total strain @p e. */
+      EnvelopePoint
+      compression(const double e, const double l, const double phi) const;
+
+      /** The tensile envelope at total strain @p e. */
+      EnvelopePoint
+      tension(const double e, const double l, const double phi) const;
+
+      /** Plastic strain and damage of an envelope point (damage capped). */
+      void
+      decompose(const double e, const double b, EnvelopePoint &p) const;
+
+      /** The stress update (see the file documentation). */
+      void
+      update(const SymmetricTensor<2, 3> &strain,
+             const State                 &old,
+             const BrickPoint            &point,
+             State                       &updated,
+             SymmetricTensor<2, 3>       &stress) const;
+
+      /** Central differences of @p function at @p strain. */
+      template <class Function>
+      SymmetricTensor<4, 3>
+      numerical_tangent(const Function              &function,
+                        const SymmetricTensor<2, 3> &strain) const;
+
+      double E = 10e9, nu = 0.15, f_c = 20e6, ratio = 0.4, eps_c = 0.004;
+      double G_c = 20000, b_c = 0.7, f_t = 2e6, G_f = 80, b_t = 0;
+      double rho = 1.16, d_max = 0.99, mu_visc = 0;
+      double alpha = 0, lambda = 0, mu = 0;
+      /** `Compressive softening', `Tension-compression interaction'. */
+      bool softening = true, interaction = false;
+      /** `Plastic Poisson's ratio': elastic (radial) or nu_p. */
+      bool   radial_flow = true;
+      double nu_p        = 0.15;
+      /** `Confinement coefficient' and Lubliner's gamma from it. */
+      double k_confinement = 0, gamma = 0;
+      /** The initial stiffness. */
+      SymmetricTensor<4, 3> C0;
+    };
+  } // namespace brickwork
+} // namespace masonry
+
+#endif

@@ -1,0 +1,572 @@
+/**
+ * @file
+ * Brick material `damage plasticity': the stress update, the IMPL-EX
+ * stress and the tangents (the formulation: the documentation of
+ * include/masonry/brickwork/laws/damage_plasticity.h; the entries:
+ * damage_plasticity_parameters.cc; the `mortar' plugin: mortar.cc).
+ */
+#include <masonry/brickwork/laws/damage_plasticity.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace masonry
+{
+  namespace brickwork
+  {
+    namespace
+    {
+      using State = DamagePlasticityBrick::State;
+
+      /** Number of doubles of a State. */
+      constexpr unsigned int n_state = 12;
+
+      State
+      unpack(ConstStateView v)
+      {
+        AssertDimension(v.size(), n_state);
+        State s;
+        for (unsigned int i = 0; i < 6; ++i)
+          s.plastic_strain.access_raw_entry(i) = v[i];
+        s.threshold_t = v[6];
+        s.threshold_c = v[7];
+        s.kappa_t     = v[8];
+        s.kappa_c     = v[9];
+        s.damage_t    = v[10];
+        s.damage_c    = v[11];
+        return s;
+      }
+
+      void
+      pack(const State &s, StateView v)
+      {
+        AssertDimension(v.size(), n_state);
+        for (unsigned int i = 0; i < 6; ++i)
+          v[i] = s.plastic_strain.access_raw_entry(i);
+        v[6]  = s.threshold_t;
+        v[7]  = s.threshold_c;
+        v[8]  = s.kappa_t;
+        v[9]  = s.kappa_c;
+        v[10] = s.damage_t;
+        v[11] = s.damage_c;
+      }
+    } // namespace
+
+    template <class Function>
+    SymmetricTensor<4, 3>
+    DamagePlasticityBrick::numerical_tangent(
+      const Function              &function,
+      const SymmetricTensor<2, 3> &strain) const
+    {
+      const double          h = 1e-7 * std::max(strain.norm(), f_t / E);
+      SymmetricTensor<4, 3> C;
+      for (unsigned int i = 0; i < 3; ++i)
+        for (unsigned int j = i; j < 3; ++j)
+          {
+            SymmetricTensor<2, 3> p = strain, m = strain;
+            p[i][j] += h;
+            m[i][j] -= h;
+            // a shear component moves e_ij and e_ji together
+            const SymmetricTensor<2, 3> ds =
+              (function(p) - function(m)) / (2 * h * (i == j ? 1 : 2));
+            for (unsigned int k = 0; k < 3; ++k)
+              for (unsigned int n = k; n < 3; ++n)
+                C[k][n][i][j] = ds[k][n];
+          }
+      return C;
+    }
+
+    void
+    DamagePlasticityBrick::report(ConstStateView            state,
+                                  dealii::ArrayView<double> values) const
+    {
+      const State s = unpack(state);
+      values[0]     = s.damage_t;
+      values[1]     = s.damage_c;
+      values[2]     = s.plastic_strain.norm();
+    }
+
+    void
+    DamagePlasticityBrick::damages(ConstStateView            state,
+                                   dealii::ArrayView<double> values) const
+    {
+      values[0] = state[10];
+      values[1] = state[11];
+    }
+
+    bool
+    DamagePlasticityBrick::is_elastic(const SymmetricTensor<2, 3> &strain,
+                                      ConstStateView               old_state,
+                                      const BrickPoint            &point) const
+    {
+      return is_elastic(strain, unpack(old_state), point);
+    }
+
+    void
+    DamagePlasticityBrick::evaluate(const SymmetricTensor<2, 3> &strain,
+                                    ConstStateView               old_state,
+                                    const BrickPoint            &point,
+                                    StateView                    updated_state,
+                                    SymmetricTensor<2, 3>       &stress,
+                                    SymmetricTensor<4, 3>       &tangent) const
+    {
+      const State old = unpack(old_state);
+      State       updated;
+      evaluate(strain, old, point, updated, stress, tangent);
+      pack(updated, updated_state);
+    }
+
+    void
+    DamagePlasticityBrick::update_state(const SymmetricTensor<2, 3> &strain,
+                                        ConstStateView               old_state,
+                                        const BrickPoint            &point,
+                                        StateView              updated_state,
+                                        SymmetricTensor<2, 3> &stress) const
+    {
+      State updated;
+      update(strain, unpack(old_state), point, updated, stress);
+      pack(updated, updated_state);
+    }
+
+    void
+    DamagePlasticityBrick::evaluate_extrapolated(
+      const SymmetricTensor<2, 3> &strain,
+      ConstStateView               old,
+      ConstStateView               older,
+      const double                 ratio_t,
+      const BrickPoint &,
+      SymmetricTensor<2, 3> &stress,
+      SymmetricTensor<4, 3> &tangent) const
+    {
+      extrapolated(
+        strain, unpack(old), unpack(older), ratio_t, stress, &tangent);
+    }
+
+    void
+    DamagePlasticityBrick::extrapolated_stress(
+      const SymmetricTensor<2, 3> &strain,
+      ConstStateView               old,
+      ConstStateView               older,
+      const double                 ratio_t,
+      const BrickPoint &,
+      SymmetricTensor<2, 3> &stress) const
+    {
+      extrapolated(
+        strain, unpack(old), unpack(older), ratio_t, stress, nullptr);
+    }
+
+    bool
+    DamagePlasticityBrick::is_elastic(const SymmetricTensor<2, 3> &strain,
+                                      const State                 &old,
+                                      const BrickPoint            &point) const
+    {
+      if (old.kappa_t != 0 || old.kappa_c != 0 || old.damage_t != 0 ||
+          old.damage_c != 0 || old.plastic_strain.norm() != 0)
+        return false;
+      const SymmetricTensor<2, 3> s = effective(strain);
+      double                      tau_t, tau_c;
+      SymmetricTensor<2, 3>       plus, minus;
+      split(s, plus, minus, tau_t, tau_c);
+      const double phi = point.strength_factor;
+      const double m   = interaction_share(tau_c, tau_t, 0, 0, phi);
+      return tau_c <= phi * ratio * f_c * (1 - m) &&
+             tau_t <= phi * f_t * (1 - m);
+    }
+
+    void
+    DamagePlasticityBrick::evaluate(const SymmetricTensor<2, 3> &strain,
+                                    const State                 &old,
+                                    const BrickPoint            &point,
+                                    State                       &updated,
+                                    SymmetricTensor<2, 3>       &stress,
+                                    SymmetricTensor<4, 3>       &tangent) const
+    {
+      update(strain, old, point, updated, stress);
+      if (is_elastic(strain, old, point))
+        {
+          tangent = elastic_stiffness();
+          return;
+        }
+      auto function = [&](const SymmetricTensor<2, 3> &e) {
+        State                 scratch;
+        SymmetricTensor<2, 3> s;
+        update(e, old, point, scratch, s);
+        return s;
+      };
+      tangent = numerical_tangent(function, strain);
+    }
+
+    void
+    DamagePlasticityBrick::extrapolated(const SymmetricTensor<2, 3> &strain,
+                                        const State                 &old,
+                                        const State                 &older,
+                                        const double                 ratio_t,
+                                        SymmetricTensor<2, 3>       &stress,
+                                        SymmetricTensor<4, 3> *tangent) const
+    {
+      // damages and plastic strain extrapolated and frozen
+      auto extrapolate = [&](const double d, const double d_older) {
+        return std::clamp(d + ratio_t * (d - d_older), d, d_max);
+      };
+      const double d_t = extrapolate(old.damage_t, older.damage_t);
+      const double d_c = extrapolate(old.damage_c, older.damage_c);
+      const SymmetricTensor<2, 3> plastic =
+        old.plastic_strain +
+        ratio_t * (old.plastic_strain - older.plastic_strain);
+      // stress = (1 - d_t) P(s) + (1 - d_c) (s - P(s)), s = C0 : (e - e_p)
+      // with everything but e frozen, so the tangent is exact and closed:
+      // ((d_c - d_t) dP/ds + (1 - d_c) I) : C0
+      const SymmetricTensor<2, 3> s = effective(strain - plastic);
+      SymmetricTensor<4, 3>       dP;
+      const SymmetricTensor<2, 3> P = positive_part(s, tangent ? &dP : nullptr);
+      stress                        = (1 - d_t) * P + (1 - d_c) * (s - P);
+      if (tangent)
+        *tangent =
+          ((d_c - d_t) * dP + (1 - d_c) * dealii::identity_tensor<3>()) * C0;
+    }
+
+    void
+    DamagePlasticityBrick::flow(SymmetricTensor<2, 3> &minus,
+                                const double           intact_c,
+                                const double           d_t,
+                                const double           phi,
+                                const double           T,
+                                State                 &updated,
+                                SymmetricTensor<2, 3> &plus,
+                                double                &tau_t,
+                                double                &tau_c) const
+    {
+      const double                a_d = (1 + nu_p) / (1 + nu);
+      const double                a_v = (1 - 2 * nu_p) / (1 - 2 * nu);
+      const SymmetricTensor<2, 3> I   = dealii::unit_symmetric_tensor<3>();
+      const SymmetricTensor<2, 3> G =
+        a_d * dealii::deviator(minus) + a_v * dealii::trace(minus) / 3 * I;
+      const SymmetricTensor<2, 3> s0 = plus + minus;
+      SymmetricTensor<2, 3>       p, m;
+      double                      tt, tc;
+      auto                        excess = [&](const double lambda) {
+        split(s0 - lambda * G, p, m, tt, tc);
+        const double share = interaction_share(tc, tt, 1 - intact_c, d_t, phi);
+        return tc / (1 - share) - T;
+      };
+      double a = 0, b = 1 / a_d, fa = excess(a), fb = excess(b);
+      // on (or by round-off inside) the threshold already: no flow; the
+      // threshold out of reach along the flow: as far as it goes
+      double lambda = fa <= 0 ? 0. : b;
+      if (fa > 0 && fb < 0)
+        for (unsigned int it = 0, side = 2; it < 100; ++it)
+          {
+            lambda         = (a * fb - b * fa) / (fb - fa);
+            const double f = excess(lambda);
+            if (std::abs(f) <= 1e-12 * T)
+              break;
+            if (f > 0)
+              {
+                a = lambda, fa = f;
+                if (side == 0)
+                  fb /= 2;
+                side = 0;
+              }
+            else
+              {
+                b = lambda, fb = f;
+                if (side == 1)
+                  fa /= 2;
+                side = 1;
+              }
+          }
+      updated.plastic_strain +=
+        lambda * ((1 + nu_p) / E * minus - nu_p / E * dealii::trace(minus) * I);
+      split(s0 - lambda * G, plus, minus, tau_t, tau_c);
+    }
+
+    SymmetricTensor<2, 3>
+    DamagePlasticityBrick::effective(const SymmetricTensor<2, 3> &e) const
+    {
+      return lambda * dealii::trace(e) * dealii::unit_symmetric_tensor<3>() +
+             2 * mu * e;
+    }
+
+    SymmetricTensor<2, 3>
+    DamagePlasticityBrick::compliance(const SymmetricTensor<2, 3> &s) const
+    {
+      return (1 + nu) / E * s -
+             nu / E * dealii::trace(s) * dealii::unit_symmetric_tensor<3>();
+    }
+
+    SymmetricTensor<2, 3>
+    DamagePlasticityBrick::positive_part(const SymmetricTensor<2, 3> &s,
+                                         SymmetricTensor<4, 3> *derivative,
+                                         double                *largest) const
+    {
+      SymmetricTensor<2, 3> P;
+      if (derivative)
+        *derivative = 0;
+      if (largest)
+        *largest = 0;
+      if (s.norm() == 0)
+        return P;
+      const double delta = 1e-3 * f_t;
+      auto         h     = [&](const double x) {
+        return x <= 0     ? 0. :
+                           x >= delta ? x :
+                                        x * x * (2 / delta - x / (delta * delta));
+      };
+      auto slope = [&](const double x) {
+        return x <= 0 ? 0. : x >= delta ? 1. : x * (4 - 3 * x / delta) / delta;
+      };
+      const auto eig = dealii::eigenvectors(s);
+      if (largest)
+        *largest = std::max(eig[0].first, 0.);
+      SymmetricTensor<2, 3> M[3];
+      for (unsigned int i = 0; i < 3; ++i)
+        {
+          M[i] = dealii::symmetrize(
+            dealii::outer_product(eig[i].second, eig[i].second));
+          P += h(eig[i].first) * M[i];
+        }
+      if (derivative)
+        {
+          const double scale =
+            std::max(std::abs(eig[0].first), std::abs(eig[2].first));
+          for (unsigned int i = 0; i < 3; ++i)
+            {
+              *derivative +=
+                slope(eig[i].first) * dealii::outer_product(M[i], M[i]);
+              for (unsigned int j = i + 1; j < 3; ++j)
+                {
+                  const double a = eig[i].first, b = eig[j].first;
+                  const double theta = std::abs(a - b) <= 1e-10 * scale ?
+                                         0.5 * (slope(a) + slope(b)) :
+                                         (h(a) - h(b)) / (a - b);
+                  const SymmetricTensor<2, 3> G = dealii::symmetrize(
+                    dealii::outer_product(eig[i].second, eig[j].second));
+                  *derivative += 2 * theta * dealii::outer_product(G, G);
+                }
+            }
+        }
+      return P;
+    }
+
+    void
+    DamagePlasticityBrick::split(const SymmetricTensor<2, 3> &s,
+                                 SymmetricTensor<2, 3>       &plus,
+                                 SymmetricTensor<2, 3>       &minus,
+                                 double                      &tau_t,
+                                 double                      &tau_c) const
+    {
+      plus            = positive_part(s, nullptr, &tau_t);
+      minus           = s - plus;
+      const double I1 = dealii::trace(minus);
+      const double J2 =
+        0.5 * dealii::deviator(minus).norm() * dealii::deviator(minus).norm();
+      // Lubliner's -gamma <-s_max>: the largest principal value of s- is
+      // negative only when all three principal stresses are compressive
+      const double s_max = gamma > 0 ? dealii::eigenvalues(minus)[0] : 0.;
+      tau_c              = std::max(0.,
+                       (std::sqrt(3 * J2) + alpha * I1 +
+                        gamma * std::min(s_max, 0.)) /
+                         (1 - alpha));
+    }
+
+    double
+    DamagePlasticityBrick::interaction_share(const double tau_c,
+                                             const double tau_t,
+                                             const double d_c,
+                                             const double d_t,
+                                             const double phi) const
+    {
+      if (!interaction)
+        return 0.;
+      return std::min({(1 - d_c) * tau_c / (phi * f_c),
+                       (1 - d_t) * tau_t / (phi * f_t),
+                       0.5});
+    }
+
+    double
+    DamagePlasticityBrick::scale_onto(const double tau,
+                                      const double a,
+                                      const double M,
+                                      double       T)
+    {
+      const double k_high = T * (1 - M) / tau;
+      const double k      = k_high * a >= M ? k_high : T / (tau + T * a);
+      return std::clamp(k, 0., 1.);
+    }
+
+    DamagePlasticityBrick::EnvelopePoint
+    DamagePlasticityBrick::compression(const double e,
+                                       const double l,
+                                       const double phi) const
+    {
+      const double  fc = phi * f_c, f0 = ratio * fc, e0 = f0 / E;
+      const double  ec = phi * eps_c;
+      EnvelopePoint p;
+      if (e <= e0)
+        {
+          p.stress = E * e;
+          return p;
+        }
+      if (e <= ec)
+        {
+          const double x = (e - e0) / (ec - e0);
+          const double k = E * (ec - e0) / (fc - f0);
+          p.stress       = f0 + (fc - f0) * (k * x - x * x) / (1 + (k - 2) * x);
+        }
+      else
+        p.stress = softening ? fc * std::exp(-(e - ec) * fc * l / G_c) : fc;
+      decompose(e, b_c, p);
+      return p;
+    }
+
+    DamagePlasticityBrick::EnvelopePoint
+    DamagePlasticityBrick::tension(const double e,
+                                   const double l,
+                                   const double phi) const
+    {
+      const double  ft = phi * f_t, e0 = ft / E;
+      EnvelopePoint p;
+      if (e <= e0)
+        {
+          p.stress = E * e;
+          return p;
+        }
+      const double w = G_f / (ft * l) - ft / (2 * E);
+      p.stress       = ft * std::exp(-(e - e0) / w);
+      decompose(e, b_t, p);
+      return p;
+    }
+
+    void
+    DamagePlasticityBrick::decompose(const double   e,
+                                     const double   b,
+                                     EnvelopePoint &p) const
+    {
+      p.plastic = b * (e - p.stress / E);
+      p.damage  = 1 - p.stress / (E * (e - p.plastic));
+      if (p.damage > d_max)
+        {
+          p.damage  = d_max;
+          p.plastic = e - p.stress / ((1 - d_max) * E);
+        }
+      p.damage = std::max(p.damage, 0.);
+    }
+
+    void
+    DamagePlasticityBrick::update(const SymmetricTensor<2, 3> &strain,
+                                  const State                 &old,
+                                  const BrickPoint            &point,
+                                  State                       &updated,
+                                  SymmetricTensor<2, 3>       &stress) const
+    {
+      const double phi = point.strength_factor;
+      const double l   = point.characteristic_length;
+      updated          = old;
+      SymmetricTensor<2, 3> plus, minus;
+      double                tau_t, tau_c;
+      split(effective(strain - old.plastic_strain), plus, minus, tau_t, tau_c);
+      double d_t = old.kappa_t > 0 ? tension(old.kappa_t, l, phi).damage : 0.;
+      double d_c =
+        old.kappa_c > 0 ? compression(old.kappa_c, l, phi).damage : 0.;
+      // compression: the envelope strain this trial state corresponds to
+      {
+        const double m   = interaction_share(tau_c, tau_t, d_c, d_t, phi);
+        const double tau = tau_c / (1 - m);
+        const double p_old =
+          old.kappa_c > 0 ? compression(old.kappa_c, l, phi).plastic : 0.;
+        const double e = p_old + tau / E;
+        if (e > old.kappa_c && e > ratio * phi * f_c / E && tau_c > 0)
+          {
+            const EnvelopePoint env = compression(e, l, phi);
+            const double        T   = E * (e - env.plastic);
+            const double        s =
+              interaction ?
+                       scale_onto(tau_c,
+                           (1 - env.damage) * tau_c / (phi * f_c),
+                           std::min((1 - d_t) * tau_t / (phi * f_t), 0.5),
+                           T) :
+                       T / tau_c;
+            if (radial_flow)
+              {
+                updated.plastic_strain += (1 - s) * compliance(minus);
+                minus *= s;
+                tau_c *= s;
+              }
+            else
+              flow(minus,
+                   1 - env.damage,
+                   d_t,
+                   phi,
+                   T,
+                   updated,
+                   plus,
+                   tau_t,
+                   tau_c);
+            updated.kappa_c     = e;
+            updated.threshold_c = T;
+            d_c                 = env.damage;
+          }
+      }
+      {
+        const double m   = interaction_share(tau_c, tau_t, d_c, d_t, phi);
+        const double tau = tau_t / (1 - m);
+        const double p_old =
+          old.kappa_t > 0 ? tension(old.kappa_t, l, phi).plastic : 0.;
+        const double e = p_old + tau / E;
+        if (e > old.kappa_t && e > phi * f_t / E && tau_t > 0)
+          {
+            const EnvelopePoint env = tension(e, l, phi);
+            const double        T   = E * (e - env.plastic);
+            const double        s =
+              interaction ?
+                       scale_onto(tau_t,
+                           (1 - env.damage) * tau_t / (phi * f_t),
+                           std::min((1 - d_c) * tau_c / (phi * f_c), 0.5),
+                           T) :
+                       T / tau_t;
+            updated.plastic_strain += (1 - s) * compliance(plus);
+            plus *= s;
+            updated.kappa_t     = e;
+            updated.threshold_t = T;
+            d_t                 = env.damage;
+          }
+      }
+      // viscous regularisation
+      const double a =
+        mu_visc > 0 && point.time_step > 0 ? mu_visc / point.time_step : 0.;
+      updated.damage_t =
+        std::max((d_t + a * old.damage_t) / (1 + a), old.damage_t);
+      updated.damage_c =
+        std::max((d_c + a * old.damage_c) / (1 + a), old.damage_c);
+      stress = (1 - updated.damage_t) * plus + (1 - updated.damage_c) * minus;
+    }
+
+  } // namespace brickwork
+} // namespace masonry
+
+
+MASONRY_REGISTER_BRICK_MATERIAL(
+  masonry::brickwork::DamagePlasticityBrick,
+  "damage plasticity",
+  "Damage-plasticity for bricks under cyclic compression (Lubliner et al. "
+  "1989 / Lee & Fenves 1998 measure, explicit update after Faria, Oliver & "
+  "Cervera 1998 and Petracca et al. 2022): effective stress s = C0 : (e - "
+  "e_p) split into positive and negative principal parts; compressive "
+  "measure (sqrt(3 J2(s-)) + alpha I1(s-)) / (1 - alpha), tensile measure "
+  "the largest principal s; uniaxial envelopes in compression (linear, "
+  "CEB-FIP hardening to f_c at eps_c, exponential softening with G_c / l) "
+  "and tension (linear to f_t, exponential softening with G_f / l), each "
+  "split into plastic strain b (e - sigma / E0) and damage; on loading the "
+  "plastic strain grows along C0^-1 : s-+ so that the state lands on the "
+  "envelope (exact in uniaxial stress, no local iterations); stress = (1 - "
+  "d_t) s+ + (1 - d_c) s-, so cracks close with the compressive stiffness "
+  "and unloading follows (1 - d_c) E0 to the plastic strain. l is the cube "
+  "root of the element volume (crack band). The positive part of a "
+  "principal stress is blended smoothly (C1) over its first 0.1 % of f_t "
+  "so that Newton converges where a principal stress is zero. Tangent: "
+  "central differences of the stress update (consistent to O(h^2)); "
+  "elastic points use C0. Options: `Tension-compression interaction' "
+  "(failure on the linear envelope sigma_t / f_t + sigma_c / f_c = 1 under "
+  "compression with lateral tension), `Confinement coefficient' (Lubliner's "
+  "triaxial term), `Compressive softening' = false (perfectly plastic in "
+  "compression).")

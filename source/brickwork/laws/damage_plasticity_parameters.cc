@@ -1,0 +1,298 @@
+/**
+ * @file
+ * Brick material `damage plasticity': its entries, their parsing, its
+ * state variables and derived values (the law itself:
+ * damage_plasticity.cc; the class: include/masonry/brickwork/laws/
+ * damage_plasticity.h).
+ */
+#include <masonry/brickwork/laws/damage_plasticity.h>
+#include <masonry/core/parameters.h>
+
+#include <sstream>
+#include <string>
+
+namespace masonry
+{
+  namespace brickwork
+  {
+    void
+    DamagePlasticityBrick::declare(dealii::ParameterHandler       &prm,
+                                   const DamagePlasticityDefaults &defaults)
+    {
+      using dealii::Patterns::Bool;
+      using dealii::Patterns::Double;
+      prm.declare_entry("Young's modulus",
+                        defaults.E,
+                        Double(0),
+                        std::string("Initial Young's modulus E0 of the ") +
+                          defaults.what + ", Pa (> 0).");
+      prm.declare_entry("Poisson's ratio",
+                        defaults.nu,
+                        Double(-1, 0.5),
+                        "Poisson's ratio (dimensionless, -1 < nu < 0.5).");
+      prm.declare_entry("Compressive strength",
+                        defaults.f_c,
+                        Double(0),
+                        "Uniaxial compressive strength f_c, Pa (> 0): the "
+                        "peak of the compressive envelope.");
+      prm.declare_entry(
+        "Elastic limit ratio",
+        "0.4",
+        Double(0, 1),
+        "Stress at the end of the linear part of the compressive "
+        "envelope over f_c (dimensionless, 0 < ratio < 1).");
+      prm.declare_entry(
+        "Strain at peak",
+        defaults.eps_c,
+        Double(0),
+        "Total strain eps_c at the compressive peak (dimensionless, at "
+        "least f_c / E0). Between the elastic limit e0 = ratio f_c / E0 "
+        "and eps_c the envelope is sigma = f_c0 + (f_c - f_c0) (k x - "
+        "x^2) / (1 + (k - 2) x), x = (e - e0) / (eps_c - e0), k = E0 "
+        "(eps_c - e0) / (f_c - f_c0): slope E0 at e0, zero at the peak "
+        "(the CEB-FIP/Sargin shape).");
+      prm.declare_entry(
+        "Compressive fracture energy",
+        "20000",
+        Double(0),
+        "Crushing energy G_c, J/m^2 (> 0): after the peak sigma = f_c "
+        "exp(-(e - eps_c) / w_c) with w_c = G_c / (f_c l), so that the "
+        "area under the softening branch times the element's "
+        "characteristic length l (cube root of its volume) is G_c.");
+      prm.declare_entry(
+        "Plastic strain ratio",
+        "0.7",
+        Double(0, 1),
+        "Share b_c of the inelastic strain e - sigma / E0 that is plastic "
+        "on the compressive envelope (dimensionless, 0 <= b_c < 1): "
+        "e_p = b_c (e - sigma / E0); the rest is damage, d_c = 1 - sigma "
+        "/ (E0 (e - e_p)), so unloading follows (1 - d_c) E0 to e_p.");
+      prm.declare_entry("Tensile strength",
+                        defaults.f_t,
+                        Double(0),
+                        "Uniaxial tensile strength f_t, Pa (> 0); linear "
+                        "up to it.");
+      prm.declare_entry(
+        "Tensile fracture energy",
+        defaults.G_f,
+        Double(0),
+        "Fracture energy G_f, J/m^2 (> 0): after the peak sigma = f_t "
+        "exp(-(e - f_t / E0) / w_t), w_t = G_f / (f_t l) - f_t / (2 "
+        "E0), so that the whole area under the tension curve times l is "
+        "G_f. Needs elements smaller than 2 G_f E0 / f_t^2.");
+      prm.declare_entry(
+        "Tensile plastic strain ratio",
+        "0",
+        Double(0, 1),
+        "Share b_t of the inelastic tensile strain that is plastic "
+        "(dimensionless, 0 <= b_t < 1; 0: cracks close completely).");
+      prm.declare_entry(
+        "Biaxial to uniaxial strength ratio",
+        "1.16",
+        Double(1, 10),
+        "Equibiaxial over uniaxial compressive strength rho "
+        "(dimensionless, >= 1): alpha = (rho - 1) / (2 rho - 1) in the "
+        "compressive measure (sqrt(3 J2) + alpha I1) / (1 - alpha) of the "
+        "negative part of the effective stress (Lubliner et al. 1989).");
+      prm.declare_entry(
+        "Maximum damage",
+        "0.99",
+        Double(0, 1),
+        "Cap of both damages (dimensionless, 0 < d_max < 1): beyond it the "
+        "plastic strain takes the rest of the envelope, so the stress "
+        "still follows the envelope and the stiffness never vanishes.");
+      prm.declare_entry(
+        "Viscosity",
+        "0",
+        Double(0),
+        "Viscous regularisation of both damages, s (>= 0; 0: none): d_v = "
+        "(d + (mu / dt) d_v,old) / (1 + mu / dt) with dt the pseudo-time "
+        "of the step (platen displacement increment / `Platen speed').");
+      prm.declare_entry(
+        "Compressive softening",
+        defaults.softening,
+        Bool(),
+        "Whether the compressive envelope softens after its peak (true: "
+        "sigma = f_c exp(-(e - eps_c) / w_c), see `Compressive fracture "
+        "energy'; false: sigma = f_c beyond eps_c, perfectly plastic in "
+        "compression: the material flows at its (confined) strength, the "
+        "inelastic strain still split by `Plastic strain ratio').");
+      prm.declare_entry(
+        "Confinement coefficient",
+        "0",
+        Double(0),
+        "k in |sigma_1| = f_c + k p, the rise of the compressive strength "
+        "with an equal lateral pressure p (triaxial compression, "
+        "dimensionless). 0: the value of the cone alone, k0 = (1 + 2 "
+        "alpha) / (1 - alpha) (1.414 for rho = 1.16); a value k >= k0 adds "
+        "Lubliner's term -gamma <-s_max> of the largest principal effective "
+        "stress when all three are compressive, gamma = k (1 - alpha) - (1 "
+        "+ 2 alpha). Richart et al. (1928) measured k of about 4.1 for "
+        "concrete (recalled, not checked against the paper).");
+      prm.declare_entry(
+        "Plastic Poisson's ratio",
+        defaults.nu_p,
+        dealii::Patterns::Anything(),
+        "Direction of the compressive plastic flow: `elastic' (the plastic "
+        "strain grows along C0^-1 : s-, as the elastic strain, and the "
+        "uniaxial response is exactly the input curve) or a number nu_p "
+        "(dimensionless, -1 < nu_p < 1): along C_p^-1 : s- with the "
+        "compliance of E0 and nu_p, so 0.5 is isochoric flow and larger "
+        "values dilate. A confined layer keeps expanding laterally only "
+        "if nu_p exceeds the ratio p / (|sigma_1| + p) of its stresses; "
+        "with `elastic' its lateral pressure stops at p = nu |sigma_1| / "
+        "(1 - nu). The peak and plateau stay on the envelope; the strain "
+        "at which a point reaches them changes.");
+      prm.declare_entry(
+        "Tension-compression interaction",
+        "false",
+        Bool(),
+        "Whether tension lowers the compressive strength and compression "
+        "the tensile strength (true: failure on the linear envelope "
+        "sigma_t / f_t + sigma_c / f_c = 1 under compression with lateral "
+        "tension, the Lee-Fenves beta <s_max> term written per mode: with "
+        "the utilisations u_c = (1 - d_c) tau_c / f_c and u_t = (1 - d_t) "
+        "s_max / f_t and m = min(u_c, u_t, 1/2), both measures are divided "
+        "by 1 - m, so a point where compression dominates fails in "
+        "compression and one where tension dominates cracks, and pure "
+        "tension or compression is unchanged; false: independent "
+        "criteria, a square envelope).");
+    }
+
+    void
+    DamagePlasticityBrick::parse_parameters(dealii::ParameterHandler &prm)
+    {
+      E             = prm.get_double("Young's modulus");
+      nu            = prm.get_double("Poisson's ratio");
+      f_c           = prm.get_double("Compressive strength");
+      ratio         = prm.get_double("Elastic limit ratio");
+      eps_c         = prm.get_double("Strain at peak");
+      G_c           = prm.get_double("Compressive fracture energy");
+      b_c           = prm.get_double("Plastic strain ratio");
+      f_t           = prm.get_double("Tensile strength");
+      G_f           = prm.get_double("Tensile fracture energy");
+      b_t           = prm.get_double("Tensile plastic strain ratio");
+      rho           = prm.get_double("Biaxial to uniaxial strength ratio");
+      d_max         = prm.get_double("Maximum damage");
+      mu_visc       = prm.get_double("Viscosity");
+      softening     = prm.get_bool("Compressive softening");
+      interaction   = prm.get_bool("Tension-compression interaction");
+      k_confinement = prm.get_double("Confinement coefficient");
+      {
+        const std::string flow = prm.get("Plastic Poisson's ratio");
+        radial_flow            = flow == "elastic";
+        if (!radial_flow)
+          {
+            std::size_t end = 0;
+            try
+              {
+                nu_p = std::stod(flow, &end);
+              }
+            catch (...)
+              {
+                end = 0;
+              }
+            AssertThrow(end == flow.size() && end > 0 && nu_p > -1 && nu_p < 1,
+                        ExcParameter("Plastic Poisson's ratio",
+                                     "must be `elastic' or a number "
+                                     "strictly between -1 and 1"));
+          }
+      }
+      auto positive = [](const double v, const char *entry) {
+        AssertThrow(v > 0, ExcParameter(entry, "must be positive"));
+      };
+      positive(E, "Young's modulus");
+      positive(f_c, "Compressive strength");
+      positive(G_c, "Compressive fracture energy");
+      positive(f_t, "Tensile strength");
+      positive(G_f, "Tensile fracture energy");
+      AssertThrow(nu > -1 && nu < 0.5,
+                  ExcParameter("Poisson's ratio",
+                               "must lie strictly between -1 and 0.5"));
+      AssertThrow(ratio > 0 && ratio < 1,
+                  ExcParameter("Elastic limit ratio",
+                               "must lie strictly between 0 and 1"));
+      AssertThrow(b_c < 1,
+                  ExcParameter("Plastic strain ratio", "must be below 1"));
+      AssertThrow(b_t < 1,
+                  ExcParameter("Tensile plastic strain ratio",
+                               "must be below 1"));
+      AssertThrow(d_max > 0 && d_max < 1,
+                  ExcParameter("Maximum damage",
+                               "must lie strictly between 0 and 1"));
+      std::ostringstream m;
+      m << "must be at least f_c / E0 = " << f_c / E
+        << " (else the envelope cannot rise from the elastic limit to "
+           "the peak with a slope below E0)";
+      AssertThrow(eps_c >= f_c / E * (1 + 1e-12),
+                  ExcParameter("Strain at peak", m.str()));
+      alpha           = (rho - 1) / (2 * rho - 1);
+      const double k0 = (1 + 2 * alpha) / (1 - alpha);
+      {
+        std::ostringstream m;
+        m << "must be 0 or at least (1 + 2 alpha) / (1 - alpha) = " << k0
+          << ", the value of the compressive cone with `Biaxial to "
+             "uniaxial strength ratio' = "
+          << rho;
+        AssertThrow(k_confinement == 0 || k_confinement >= k0 * (1 - 1e-12),
+                    ExcParameter("Confinement coefficient", m.str()));
+      }
+      gamma  = k_confinement == 0 ?
+                 0. :
+                 std::max(0., k_confinement * (1 - alpha) - (1 + 2 * alpha));
+      lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
+      mu     = E / (2 * (1 + nu));
+      C0     = elastic_stiffness();
+    }
+
+    std::vector<StateVariable>
+    DamagePlasticityBrick::state_variables() const
+    {
+      // the order of pack() and unpack()
+      return {{"plastic_strain", 6},
+              {"threshold_tension", 1},
+              {"threshold_compression", 1},
+              {"kappa_tension", 1},
+              {"kappa_compression", 1},
+              {"damage_tension", 1},
+              {"damage_compression", 1}};
+    }
+
+    std::vector<DerivedValue>
+    DamagePlasticityBrick::derived_values() const
+    {
+      return {{"alpha",
+               alpha,
+               "-",
+               "(rho - 1) / (2 rho - 1) of the compressive measure "
+               "(Lubliner), rho = `Biaxial to uniaxial strength ratio'"},
+              {"elastic_limit_stress",
+               ratio * f_c,
+               "Pa",
+               "`Elastic limit ratio' x `Compressive strength'"},
+              {"confinement_coefficient",
+               (1 + 2 * alpha + gamma) / (1 - alpha),
+               "-",
+               "k = (1 + 2 alpha + gamma) / (1 - alpha): the rise of the "
+               "compressive measure's strength per unit of equal lateral "
+               "pressure, |sigma_1| = f_c + k p (gamma = 0 unless "
+               "`Confinement coefficient' is set)"}};
+    }
+
+    void
+    DamagePlasticityBrick::check_point(const BrickPoint &point) const
+    {
+      const double ft    = point.strength_factor * f_t;
+      const double l_max = 2 * G_f * E / (ft * ft);
+      if (point.characteristic_length >= l_max)
+        {
+          std::ostringstream m;
+          m << "is too small for elements of " << point.characteristic_length
+            << " m: the tension softening needs l < 2 G_f E0 / f_t^2 = "
+            << l_max << " m (refine the mesh or raise the energy)";
+          AssertThrow(false, ExcParameter("Tensile fracture energy", m.str()));
+        }
+    }
+
+  } // namespace brickwork
+} // namespace masonry
