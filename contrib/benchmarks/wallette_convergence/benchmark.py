@@ -5,7 +5,6 @@ import argparse
 import csv
 import json
 import os
-import resource
 import subprocess
 import sys
 
@@ -13,6 +12,8 @@ here = os.path.dirname(os.path.abspath(__file__))
 root = os.path.dirname(os.path.dirname(os.path.dirname(here)))
 sys.path.insert(0, os.path.join(root, "contrib", "study"))
 from study import set_entry  # noqa: E402
+sys.path.insert(0, os.path.dirname(here))
+from wallette_common import cells, cpu_seconds, read_rows  # noqa: E402,E501
 
 THICKNESSES = ("single", "double", "triple")
 # issue 16: the peak of the example mesh within 3 % of the next finer mesh
@@ -23,10 +24,6 @@ DROP = 0.9
 # nominal step of the examples, strain
 STEP = 1e-4
 
-
-def cells(mesh):
-    a, b, c = (int(x) for x in mesh.split("x"))
-    return a * b * c
 
 
 def example_mesh(thickness):
@@ -41,10 +38,6 @@ def example_mesh(thickness):
                 values.append(s[-1])
     return "x".join(values)
 
-
-def cpu_seconds():
-    r = resource.getrusage(resource.RUSAGE_CHILDREN)
-    return r.ru_utime + r.ru_stime
 
 
 def run_case(thickness, mesh, strain, ranks, directory, masonry):
@@ -209,24 +202,9 @@ def main():
     meshes = args.meshes.split(",")
     directory = os.path.abspath(args.output)
     os.makedirs(directory, exist_ok=True)
-    rows = []
     old = os.path.join(directory, "results.csv")
-    if os.path.exists(old) and not args.fresh:
-        with open(old) as f:
-            for r in csv.DictReader(f):
-                row = {}
-                for k, v in r.items():
-                    if v == "" or k == "change_to_finer":
-                        continue
-                    try:
-                        row[k] = int(v)
-                    except ValueError:
-                        try:
-                            row[k] = float(v)
-                        except ValueError:
-                            row[k] = v
-                rows.append(row)
-    elif args.report_only:
+    rows = [] if args.fresh else read_rows(old)
+    if not rows and args.report_only:
         raise SystemExit(f"convergence: error: no {old} to report on")
 
     def put(row):

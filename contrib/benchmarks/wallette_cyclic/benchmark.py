@@ -5,7 +5,6 @@ import csv
 import json
 import os
 import re
-import resource
 import subprocess
 import sys
 import time
@@ -14,6 +13,8 @@ here = os.path.dirname(os.path.abspath(__file__))
 root = os.path.dirname(os.path.dirname(os.path.dirname(here)))
 sys.path.insert(0, os.path.join(root, "contrib", "study"))
 from study import set_entry  # noqa: E402
+sys.path.insert(0, os.path.dirname(here))
+from wallette_common import cells, cpu_seconds, read_rows  # noqa: E402,E501
 
 THICKNESSES = ("single", "double", "triple")
 # targets of issue 7: wall seconds at a mesh whose peak is within 2 % of
@@ -27,12 +28,6 @@ def accepts(thickness, mesh):
     n_l = int(mesh.split("x")[0])
     return n_l % 2 == 0 if thickness == "single" else n_l % 4 == 0
 
-
-def cpu_seconds():
-    """User + system seconds of the finished children (the ranks and
-    mpirun): on a shared machine the wall time also counts the others'."""
-    r = resource.getrusage(resource.RUSAGE_CHILDREN)
-    return r.ru_utime + r.ru_stime
 
 
 def run_case(thickness, mesh, half_step, ranks, directory):
@@ -103,10 +98,6 @@ KEYS = ["thickness", "mesh", "step", "ranks", "n_cells", "n_dofs", "steps",
         "strain_at_peak", "initial_modulus", "change_to_finer", "status",
         "exit_code"]
 
-
-def cells(mesh):
-    a, b, c = (int(x) for x in mesh.split("x"))
-    return a * b * c
 
 
 def add_changes(rows):
@@ -235,24 +226,9 @@ def main():
     os.makedirs(directory, exist_ok=True)
     # the rows of earlier runs into this directory: a case run again
     # replaces its row, so the table can be built up thickness by thickness
-    rows = []
     old = os.path.join(directory, "results.csv")
-    if os.path.exists(old) and not args.fresh:
-        with open(old) as f:
-            for r in csv.DictReader(f):
-                row = {}
-                for k, v in r.items():
-                    if v == "" or k == "change_to_finer":
-                        continue
-                    try:
-                        row[k] = int(v)
-                    except ValueError:
-                        try:
-                            row[k] = float(v)
-                        except ValueError:
-                            row[k] = v
-                rows.append(row)
-    elif args.report_only:
+    rows = [] if args.fresh else read_rows(old)
+    if not rows and args.report_only:
         raise SystemExit(f"benchmark: error: no {old} to report on")
 
     def put(row):
