@@ -39,3 +39,12 @@ def read_rows(path):
                         row[k] = v
             rows.append(row)
     return rows
+
+
+def write_rows(path, keys, rows):
+    """results.csv: the columns keys of every row (other entries left out)."""
+    with open(path, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=keys, extrasaction="ignore")
+        w.writeheader()
+        for r in rows:
+            w.writerow(r)

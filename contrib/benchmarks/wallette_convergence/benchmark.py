@@ -13,7 +13,8 @@ root = os.path.dirname(os.path.dirname(os.path.dirname(here)))
 sys.path.insert(0, os.path.join(root, "contrib", "study"))
 from study import set_entry  # noqa: E402
 sys.path.insert(0, os.path.dirname(here))
-from wallette_common import cells, cpu_seconds, read_rows  # noqa: E402,E501
+from wallette_common import (cells, cpu_seconds, read_rows,  # noqa: E402
+                             write_rows)
 
 THICKNESSES = ("single", "double", "triple")
 # issue 16: the peak of the example mesh within 3 % of the next finer mesh
@@ -123,18 +124,15 @@ def add_changes(rows, meshes):
                             r["mesh"] in order and "first_peak" in r],
                            key=lambda r: order[r["mesh"]])
         for r in rows:
-            r.pop("change_to_finer", None) if r["thickness"] == t else None
+            if r["thickness"] == t:
+                r.pop("change_to_finer", None)
         for a, b in zip(mesh_rows, mesh_rows[1:]):
             a["change_to_finer"] = (a["first_peak"] - b["first_peak"]) / \
                 b["first_peak"]
 
 
 def report(directory, rows):
-    with open(os.path.join(directory, "results.csv"), "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=KEYS, extrasaction="ignore")
-        w.writeheader()
-        for r in rows:
-            w.writerow(r)
+    write_rows(os.path.join(directory, "results.csv"), KEYS, rows)
     lines = [
         "| thickness | mesh | cells | DOFs | steps | CPU s | first peak MPa "
         "| at strain | past it | change to next finer | largest stress MPa | "

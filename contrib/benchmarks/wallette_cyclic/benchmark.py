@@ -1,7 +1,6 @@
 #!/usr/bin/python3
 """Cyclic wallette benchmark (called by ./run, which documents the options)."""
 import argparse
-import csv
 import json
 import os
 import re
@@ -14,7 +13,8 @@ root = os.path.dirname(os.path.dirname(os.path.dirname(here)))
 sys.path.insert(0, os.path.join(root, "contrib", "study"))
 from study import set_entry  # noqa: E402
 sys.path.insert(0, os.path.dirname(here))
-from wallette_common import cells, cpu_seconds, read_rows  # noqa: E402,E501
+from wallette_common import (cells, cpu_seconds, read_rows,  # noqa: E402
+                             write_rows)
 
 THICKNESSES = ("single", "double", "triple")
 # targets of issue 7: wall seconds at a mesh whose peak is within 2 % of
@@ -122,11 +122,7 @@ def add_changes(rows):
 
 
 def report(directory, rows):
-    with open(os.path.join(directory, "results.csv"), "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=KEYS, extrasaction="ignore")
-        w.writeheader()
-        for r in rows:
-            w.writerow(r)
+    write_rows(os.path.join(directory, "results.csv"), KEYS, rows)
     lines = [
         "| thickness | mesh | step | cells | DOFs | steps | Newton/step | "
         "cut-backs | deleted | assembly s | solve s | wall s | CPU s | "
