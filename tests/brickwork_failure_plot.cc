@@ -28,37 +28,7 @@ namespace
   std::string
   unit(const double nu, const bool listed)
   {
-    std::ostringstream s;
-    s << "  set Brick length = 2.0\n"
-         "  set Brick width = 0.002\n"
-         "  set Brick height = 0.1\n"
-         "  set Joint thickness = 0\n"
-         "  set Courses = 1\n"
-         "  set Length in bricks = 1\n"
-         "  set Elements along the length = 40\n"
-         "  set Elements along the width = 1\n"
-         "  set Elements along the height = 8\n"
-         "  set Platen lateral restraint = fixed\n"
-         "  set Target strain = 0.0005\n"
-         "  set Number of steps = 100\n"
-         "  set Output interval = 1000\n"
-         "  set Write VTU = true\n"
-         "  set Splitting interfaces = true\n"
-         "  set Splitting tensile strength = 1e6\n"
-         "  set Splitting fracture energy = 50\n"
-         "  set Splitting compressive strength = 10e6\n"
-         "  set Splitting stiffness = 1e15\n";
     std::ostringstream m;
-    m << "subsection Bond\n  set Pattern = stack\nend\n"
-         "subsection Brick material\n"
-         "  set Model = elastic\n"
-         "  subsection Elastic\n"
-         "    set Young's modulus = 10e9\n"
-         "    set Poisson's ratio = "
-      << nu
-      << "\n"
-         "  end\n"
-         "end\n";
     if (listed)
       m << "subsection Postprocess\n"
            "  subsection Wallette\n"
@@ -73,7 +43,12 @@ namespace
            "    end\n"
            "  end\n"
            "end\n";
-    return prm(s.str(), m.str());
+    return splitting_unit(nu,
+                          0.0005,
+                          100,
+                          "  set Output interval = 1000\n"
+                          "  set Write VTU = true\n",
+                          m.str());
   }
 
   /** Width and height of a PNG file (0, 0 if it is not one). */

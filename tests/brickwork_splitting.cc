@@ -32,40 +32,7 @@ namespace
        const unsigned int steps = 1000,
        const std::string &extra = "")
   {
-    std::ostringstream s;
-    s << "  set Brick length = 2.0\n"
-         "  set Brick width = 0.002\n"
-         "  set Brick height = 0.1\n"
-         "  set Joint thickness = 0\n"
-         "  set Courses = 1\n"
-         "  set Length in bricks = 1\n"
-         "  set Elements along the length = 40\n"
-         "  set Elements along the width = 1\n"
-         "  set Elements along the height = 8\n"
-         "  set Platen lateral restraint = fixed\n"
-         "  set Target strain = "
-      << target
-      << "\n"
-         "  set Number of steps = "
-      << steps << "\n"
-      << extra
-      << "  set Splitting interfaces = true\n"
-         "  set Splitting tensile strength = 1e6\n"
-         "  set Splitting fracture energy = 50\n"
-         "  set Splitting compressive strength = 10e6\n"
-         "  set Splitting stiffness = 1e15\n";
-    std::ostringstream m;
-    m << "subsection Bond\n  set Pattern = stack\nend\n"
-         "subsection Brick material\n"
-         "  set Model = elastic\n"
-         "  subsection Elastic\n"
-         "    set Young's modulus = 10e9\n"
-         "    set Poisson's ratio = "
-      << nu
-      << "\n"
-         "  end\n"
-         "end\n";
-    return prm(s.str(), m.str());
+    return splitting_unit(nu, target, steps, extra);
   }
 
   /** Strain of the first step with a damaged interface point; 0: none. */

@@ -17,31 +17,7 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const unsigned int                       rank =
     dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
-  const std::string   text = prm("  set Brick length = 2.0\n"
-                                 "  set Brick width = 0.002\n"
-                                 "  set Brick height = 0.1\n"
-                                 "  set Joint thickness = 0\n"
-                                 "  set Courses = 1\n"
-                                 "  set Length in bricks = 1\n"
-                                 "  set Elements along the length = 40\n"
-                                 "  set Elements along the width = 1\n"
-                                 "  set Elements along the height = 8\n"
-                                 "  set Platen lateral restraint = fixed\n"
-                                 "  set Target strain = 0.0006\n"
-                                 "  set Number of steps = 60\n"
-                                 "  set Splitting interfaces = true\n"
-                                 "  set Splitting tensile strength = 1e6\n"
-                                 "  set Splitting fracture energy = 50\n"
-                                 "  set Splitting compressive strength = 10e6\n"
-                                 "  set Splitting stiffness = 1e15\n",
-                               "subsection Bond\n  set Pattern = stack\nend\n"
-                                 "subsection Brick material\n"
-                                 "  set Model = elastic\n"
-                                 "  subsection Elastic\n"
-                                 "    set Young's modulus = 10e9\n"
-                                 "    set Poisson's ratio = -0.25\n"
-                                 "  end\n"
-                                 "end\n");
+  const std::string   text = splitting_unit(-0.25, 0.0006, 60);
   const masonry::Json all  = run("ranks_all", text, MPI_COMM_WORLD);
   if (rank == 0)
     {

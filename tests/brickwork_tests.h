@@ -37,6 +37,53 @@ namespace brickwork_tests
            wallette + "end\n" + plugins;
   }
 
+  /**
+   * The splitting tests' unit: one elastic unit 2 m long, 2 mm thick and
+   * 0.1 m high (E = 10 GPa, Poisson's ratio @p nu) on a 40 x 1 x 8 mesh
+   * between laterally fixed platens, stack bond, with splitting interfaces
+   * (tensile strength 1 MPa, fracture energy 50 J/m^2, compressive
+   * strength 10 MPa, stiffness 1e15 Pa/m), loaded to @p target strain in
+   * @p steps steps. @p extra: further Wallette entries; @p plugins: further
+   * subsections after the material.
+   */
+  inline std::string
+  splitting_unit(const double       nu,
+                 const double       target,
+                 const unsigned int steps,
+                 const std::string &extra   = "",
+                 const std::string &plugins = "")
+  {
+    std::ostringstream s;
+    s << "  set Brick length = 2.0\n"
+         "  set Brick width = 0.002\n"
+         "  set Brick height = 0.1\n"
+         "  set Joint thickness = 0\n"
+         "  set Courses = 1\n"
+         "  set Length in bricks = 1\n"
+         "  set Elements along the length = 40\n"
+         "  set Elements along the width = 1\n"
+         "  set Elements along the height = 8\n"
+         "  set Platen lateral restraint = fixed\n"
+         "  set Target strain = "
+      << target << "\n  set Number of steps = " << steps << "\n"
+      << extra
+      << "  set Splitting interfaces = true\n"
+         "  set Splitting tensile strength = 1e6\n"
+         "  set Splitting fracture energy = 50\n"
+         "  set Splitting compressive strength = 10e6\n"
+         "  set Splitting stiffness = 1e15\n";
+    std::ostringstream m;
+    m << "subsection Bond\n  set Pattern = stack\nend\n"
+         "subsection Brick material\n"
+         "  set Model = elastic\n"
+         "  subsection Elastic\n"
+         "    set Young's modulus = 10e9\n"
+         "    set Poisson's ratio = "
+      << nu << "\n  end\nend\n"
+      << plugins;
+    return prm(s.str(), m.str());
+  }
+
   // run(), check() and relative() are the rigid-block tests' helpers
   using vault_tests::check;
   using vault_tests::relative;
