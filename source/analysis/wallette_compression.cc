@@ -207,6 +207,22 @@ namespace masonry
                           "Backtracking line search on the residual norm "
                           "(halving the Newton correction up to 5 times).");
         prm.declare_entry(
+          "Assembly threads",
+          "1",
+          Integer(0),
+          "Threads of each MPI rank that evaluate the laws of the cells and "
+          "interfaces in an assembly (dimensionless count; 0: the cores "
+          "divided among the ranks; the environment variable "
+          "DEAL_II_NUM_THREADS caps it). The forces and tangents are summed "
+          "in the order of the cells, yet with more than one thread the "
+          "results have been seen to differ from one thread's in the last "
+          "digits (cause not found), which can change the solution path "
+          "after cracking: 1 is the reference. More threads shorten the "
+          "assembly, a third of the run time of a detailed wallette, on "
+          "idle cores only; on cores shared with other jobs they cost CPU "
+          "time and gain no wall time (contrib/benchmarks/wallette_cyclic/"
+          "results-2026-11-24b.md).");
+        prm.declare_entry(
           "Linear solver",
           "direct",
           Selection("direct|direct klu|cg amg|gmres amg"),
@@ -551,6 +567,7 @@ namespace masonry
         s.integrator.implex  = prm.get("Damage integration") == "implex";
         s.integrator.implex_tolerance    = positive("IMPL-EX damage tolerance");
         s.integrator.implex_minimum_step = positive("IMPL-EX minimum step");
+        s.integrator.threads             = prm.get_integer("Assembly threads");
         for (unsigned int i = 1; i < amplitudes.size(); ++i)
           AssertThrow(amplitudes[i] > amplitudes[i - 1],
                       ExcParameter("Cycle amplitudes",

@@ -15,6 +15,7 @@
 #include <masonry/brickwork/wallette.h>
 #include <masonry/core/output_directory.h>
 
+#include <deal.II/base/multithread_info.h>
 #include <deal.II/distributed/shared_tria.h>
 
 #include <chrono>
@@ -151,6 +152,9 @@ namespace masonry
         , protocol(create_protocol(settings.protocol))
         , postprocessors(postprocessors)
       {
+        // the threads of the assemblies (0: deal.II's choice at start-up)
+        if (settings.integrator.threads > 0)
+          MultithreadInfo::set_thread_limit(settings.integrator.threads);
         setup(boxes);
       }
 

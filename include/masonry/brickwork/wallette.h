@@ -151,6 +151,10 @@ namespace masonry
        * of the nominal step (a softening snap keeps the damage error large
        * however small the step). */
       double implex_minimum_step = 0.01;
+      /** Threads per MPI rank that evaluate the laws of the cells and
+       * interfaces in an assembly (`Assembly threads'; 0: deal.II's
+       * default, the cores divided among the ranks). */
+      unsigned int threads = 1;
     };
 
     /** Element deletion and strength scatter (`Deletion strain', `Maximum
