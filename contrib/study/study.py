@@ -48,7 +48,7 @@ SWEEP_QUICK = dict(SWEEP, **{"Elements along the length": "2",
                              "Elements along the height": "1"})
 SWEEP_QUICK_STEP = 2e-4
 # the detailed sweep stops after this many times the nominal number of steps
-SWEEP_STEP_CAP = 5
+SWEEP_STEP_CAP = 3
 
 
 def sweep_target(f_b, E_m, h_b, h_m):
