@@ -395,6 +395,18 @@ namespace masonry
           "cell go with it, and nodes left without a cell are held where "
           "they are. 0: no deletion. Deleted cells are flagged in "
           "solution.pvd (`deleted') and counted in curve.csv.");
+        prm.declare_entry(
+          "Deletion fade opening",
+          "0",
+          Double(0),
+          "Gradual deletion, m (>= 0): a cell past `Deletion strain' fades "
+          "out instead of going at once: its stress and stiffness are "
+          "scaled by 1 - (e1 - Deletion strain) l / this, with e1 the "
+          "largest cell-averaged principal strain it has reached and l the "
+          "cube root of its volume (crack band: the fade ends at the same "
+          "lateral opening whatever the mesh); it is deleted when the "
+          "factor reaches 0, then carrying nothing. 0: deleted at once. "
+          "The fade of every cell is written to solution.pvd (`fade').");
         prm.declare_entry("Maximum deletions per step",
                           "10",
                           Integer(1, 100000),
@@ -540,6 +552,8 @@ namespace masonry
         s.protocol.unloading_stress = prm.get_double("Unloading stress");
         s.protocol.platen_speed     = positive("Platen speed");
         s.specimen.deletion_strain  = prm.get_double("Deletion strain");
+        s.specimen.deletion_fade_opening =
+          prm.get_double("Deletion fade opening");
         s.specimen.max_deletions =
           prm.get_integer("Maximum deletions per step");
         s.specimen.strength_scatter = prm.get_double("Strength scatter");

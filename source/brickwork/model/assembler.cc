@@ -265,15 +265,26 @@ namespace masonry
                         elastic = false;
                     }
                 }
+              // a cell fading out before its deletion
+              const double fade = parts.specimen.fade[c];
               if (elastic)
                 {
                   // the response cannot differ from the cached elastic one
                   const FullMatrix<double> &k = *matrix_of_cell[c];
                   k.vmult(fe_local, ue);
+                  if (fade < 1)
+                    fe_local *= fade;
                   if (!all_finite(fe_local))
                     non_finite_bits |= 1u;
                   system.f_int.add(dofs, fe_local);
-                  if (with_matrix && !bricks_assembled)
+                  if (with_matrix && !bricks_assembled && fade < 1)
+                    {
+                      ke = k;
+                      ke *= fade;
+                      system.zero_constraints.distribute_local_to_global(
+                        ke, dofs, system.matrix);
+                    }
+                  else if (with_matrix && !bricks_assembled)
                     system.zero_constraints.distribute_local_to_global(
                       k, dofs, system.matrix);
                   if (!linear)
@@ -288,6 +299,12 @@ namespace masonry
               is_initial = false;
               brick_cell(
                 fe_values, strain, c, point, with_matrix, fe_local, ke);
+              if (fade < 1)
+                {
+                  fe_local *= fade;
+                  if (with_matrix)
+                    ke *= fade;
+                }
               if (!all_finite(fe_local))
                 non_finite_bits |= 1u;
               system.f_int.add(dofs, fe_local);

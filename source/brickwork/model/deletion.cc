@@ -17,6 +17,13 @@ namespace masonry
     {
       using namespace dealii;
 
+      namespace
+      {
+        /** The factor of a cell at the end of its fade that waits for its
+         * deletion (the cap per step): small, but keeps its nodes held. */
+        constexpr double fade_floor = 1e-3;
+      } // namespace
+
       std::vector<types::global_dof_index>
       orphan_dofs(const System &system, const Specimen &specimen)
       {
@@ -40,10 +47,13 @@ namespace masonry
       delete_cells(const SpecimenSettings &settings,
                    const Joints           &joints,
                    System                 &system,
-                   Specimen               &specimen)
+                   Specimen               &specimen,
+                   unsigned int           &faded)
       {
+        faded = 0;
         if (settings.deletion_strain <= 0)
           return 0;
+        const double opening = settings.deletion_fade_opening;
         // maximum principal strain of the cell-averaged strain
         system.ghosted = system.u;
         QGauss<3>                                    quadrature(2);
@@ -52,7 +62,7 @@ namespace masonry
                               update_gradients | update_JxW_values);
         std::vector<SymmetricTensor<2, 3>>           eps(8);
         const FEValuesExtractors::Vector             displacement(0);
-        std::vector<std::pair<double, unsigned int>> candidates;
+        std::vector<std::pair<double, unsigned int>> candidates, fades;
         for (const auto &cell : system.dof_handler.active_cell_iterators())
           if (cell->is_locally_owned() &&
               !specimen.deleted[cell->active_cell_index()])
@@ -68,9 +78,29 @@ namespace masonry
                   volume += fe_values.JxW(q);
                 }
               mean /= volume;
-              const double e1 = eigenvalues(mean)[0];
-              if (e1 > settings.deletion_strain)
-                candidates.emplace_back(e1, cell->active_cell_index());
+              const double       e1 = eigenvalues(mean)[0];
+              const unsigned int c  = cell->active_cell_index();
+              if (e1 <= settings.deletion_strain)
+                continue;
+              if (opening <= 0)
+                {
+                  candidates.emplace_back(e1, c);
+                  continue;
+                }
+              // the fade: linear in the opening past the threshold (the
+              // strain over the crack band of the cell), never back up
+              const double f = 1 - (e1 - settings.deletion_strain) *
+                                     specimen.cell_length[c] / opening;
+              if (f <= 0)
+                candidates.emplace_back(e1, c);
+              else if (f < specimen.fade[c])
+                fades.emplace_back(f, c);
+            }
+        for (const auto &part : Utilities::MPI::all_gather(system.comm, fades))
+          for (const auto &[f, c] : part)
+            {
+              specimen.fade[c] = f;
+              ++faded;
             }
         // the same decision on every rank: largest strains first, capped
         std::vector<std::pair<double, unsigned int>> all;
@@ -82,7 +112,16 @@ namespace masonry
                  (a.first == b.first && a.second < b.second);
         });
         if (all.size() > settings.max_deletions)
-          all.resize(settings.max_deletions);
+          {
+            // faded out but over the cap: nearly nothing until deleted
+            for (unsigned int k = settings.max_deletions; k < all.size(); ++k)
+              if (specimen.fade[all[k].second] > fade_floor)
+                {
+                  specimen.fade[all[k].second] = fade_floor;
+                  ++faded;
+                }
+            all.resize(settings.max_deletions);
+          }
         if (all.empty())
           return 0;
         for (const auto &c : all)

@@ -26,6 +26,10 @@ namespace masonry
          * deleted. */
         std::vector<double> cell_length, cell_factor;
         std::vector<char>   deleted;
+        /** Per active cell: the factor on its stress and stiffness while
+         * it fades out before deletion (`Deletion fade opening'; 1:
+         * intact). */
+        std::vector<double> fade;
         /** Per active cell: BrickPoint::region (0 unit, 1 mortar: the cells
          * of material id n_bricks in the detailed model). */
         std::vector<unsigned char> cell_region;
@@ -41,7 +45,7 @@ namespace masonry
         void
         serialize(Archive &ar, const unsigned int)
         {
-          ar &n_deleted &deleted &face_deleted;
+          ar &n_deleted &deleted &face_deleted &fade;
         }
       };
 
