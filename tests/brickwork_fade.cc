@@ -18,6 +18,10 @@
  * and once f is below about 0.1 round-off localises it in half of them,
  * as softening does.) Tolerance 1e-5 of E x 0.01: the Newton tolerance and the
  * digits of curve.csv.
+ *
+ * `Deletion crushing length' alone: the one-cell cube fades with its
+ * shortening since the step at which it passed `Deletion strain'; the same
+ * checks with that fade (check_crushing).
  */
 #include <iomanip>
 
@@ -95,6 +99,71 @@ namespace
     if (to_the_end)
       check(zero_at_end, name + ": all cells deleted at the end of the fade");
   }
+
+  /**
+   * `Deletion crushing length' w_c alone (no lateral fade): the one-cell
+   * cube splits at the first step with nu eps > e_s, at strain eps_s, and
+   * then fades with its shortening, f = 1 - (eps_max - eps_s) l / w_c;
+   * cycles twice to 0.006, then to 0.013, where the fade is over.
+   */
+  void
+  check_crushing()
+  {
+    const double       e_s = 0.00107, w_c = 2e-4, l = 0.1;
+    std::ostringstream t;
+    t << std::setprecision(17)
+      << "set Brick length = 0.09\nset Brick width = 0.09\n"
+         "set Brick height = 0.09\nset Joint thickness = 0.01\n"
+         "set Courses = 1\nset Length in bricks = 1\n"
+         "set Elements along the length = 1\n"
+         "set Elements along the width = 1\n"
+         "set Elements along the height = 1\n"
+         "set Platen lateral restraint = free\n"
+         "set Protocol = cyclic\nset Cycle amplitudes = 0.006, 0.013\n"
+         "set Cycles per amplitude = 2\nset Unloading stress = 0.1e6\n"
+         "set Target strain = 0.013\nset Number of steps = 65\n"
+         "set Deletion strain = "
+      << e_s << "\nset Deletion crushing length = " << w_c << "\n";
+    std::ostringstream m;
+    m << std::setprecision(17)
+      << "subsection Brick material\nsubsection Elastic\n"
+      << "set Young's modulus = " << E << "\nset Poisson's ratio = " << nu
+      << "\nend\nend\n";
+    const masonry::Json s = run("crushing", prm(t.str(), m.str()));
+    check(s.at("status").as_string() == "completed",
+          "crushing: completed to the last amplitude");
+    const auto rows = curve("crushing");
+    double     f = 1, eps_s = -1, error = 0, second_peak = -1;
+    bool       zero_at_end = false;
+    for (unsigned int i = 1; i < rows.size(); ++i)
+      {
+        const double eps = rows[i][2];
+        error =
+          std::max(error, std::abs(rows[i][4] - E * eps * f) / (E * 0.01));
+        if (rows[i][8] == 2 && rows[i][9] == 0 && std::abs(eps - 0.006) < 1e-12)
+          second_peak = rows[i][4];
+        zero_at_end = f == 0 && rows[i][10] == 1;
+        // the update after the step
+        if (eps_s < 0 && nu * eps > e_s)
+          eps_s = eps;
+        if (eps_s >= 0)
+          f = std::min(f, std::max(0., 1 - (eps - eps_s) * l / w_c));
+      }
+    check(error < 1e-5,
+          "crushing: every point is E eps f(shortening since the split "
+          "before) (1e-5 of E x 0.01)");
+    const double expected = E * 0.006 * (1 - (0.006 - eps_s) * l / w_c);
+    std::cout << "crushing: split at strain " << std::fixed
+              << std::setprecision(4) << eps_s
+              << ", stress at the second 0.006 peak " << std::setprecision(3)
+              << second_peak * 1e-6 << " MPa, closed form " << expected * 1e-6
+              << " MPa\n";
+    check(std::abs(eps_s - 0.0044) < 1e-9 &&
+            std::abs(second_peak - expected) < 1e-5 * E * 0.01,
+          "crushing: split at 0.0044 (the first step past e_s / nu), second "
+          "0.006 peak = E 0.006 (1 - (0.006 - 0.0044) l / w_c)");
+    check(zero_at_end, "crushing: the cell deleted at the end of the fade");
+  }
 } // namespace
 
 int
@@ -103,4 +172,5 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   check_mesh(1, true);
   check_mesh(2, false);
+  check_crushing();
 }

@@ -407,6 +407,20 @@ namespace masonry
           "lateral opening whatever the mesh); it is deleted when the "
           "factor reaches 0, then carrying nothing. 0: deleted at once. "
           "The fade of every cell is written to solution.pvd (`fade').");
+        prm.declare_entry(
+          "Deletion crushing length",
+          "0",
+          Double(0),
+          "Crushing of split cells, m (>= 0): a cell past `Deletion "
+          "strain' (split) also fades with its shortening since then: its "
+          "factor is at most 1 - (s - s_split) l / this, with s the largest "
+          "compressive principal strain of the cell, s_split its value when "
+          "the cell passed `Deletion strain' and l the cube root of the "
+          "cell's volume (crack band: the split column crushes over this "
+          "shortening whatever the mesh; a cell at stress f fading linearly "
+          "dissipates f x this / 2 per unit area, so 2 G_fc / f_b gives the "
+          "unit's compressive fracture energy); it is deleted when the "
+          "factor reaches 0. 0: no crushing fade.");
         prm.declare_entry("Maximum deletions per step",
                           "10",
                           Integer(1, 100000),
@@ -554,6 +568,8 @@ namespace masonry
         s.specimen.deletion_strain  = prm.get_double("Deletion strain");
         s.specimen.deletion_fade_opening =
           prm.get_double("Deletion fade opening");
+        s.specimen.deletion_crushing_length =
+          prm.get_double("Deletion crushing length");
         s.specimen.max_deletions =
           prm.get_integer("Maximum deletions per step");
         s.specimen.strength_scatter = prm.get_double("Strength scatter");

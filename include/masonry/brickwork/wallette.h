@@ -166,6 +166,11 @@ namespace masonry
        * principal strain so far), and it is deleted when the factor
        * reaches 0, m (0: deleted at once). */
       double deletion_fade_opening = 0;
+      /** Past deletion_strain a cell also fades with its shortening since
+       * then: the factor is at most 1 - (s - s_split) l /
+       * deletion_crushing_length (s: largest compressive principal strain
+       * of the cell), m (0: no crushing fade). */
+      double deletion_crushing_length = 0;
       /** At most this many cells are deleted after one step. */
       unsigned int max_deletions = 10;
       /** Coefficient of variation of the strengths of bricks and joints

@@ -53,7 +53,8 @@ namespace masonry
         faded = 0;
         if (settings.deletion_strain <= 0)
           return 0;
-        const double opening = settings.deletion_fade_opening;
+        const double opening  = settings.deletion_fade_opening;
+        const double crushing = settings.deletion_crushing_length;
         // maximum principal strain of the cell-averaged strain
         system.ghosted = system.u;
         QGauss<3>                                    quadrature(2);
@@ -62,7 +63,7 @@ namespace masonry
                               update_gradients | update_JxW_values);
         std::vector<SymmetricTensor<2, 3>>           eps(8);
         const FEValuesExtractors::Vector             displacement(0);
-        std::vector<std::pair<double, unsigned int>> candidates, fades;
+        std::vector<std::pair<double, unsigned int>> candidates, fades, splits;
         for (const auto &cell : system.dof_handler.active_cell_iterators())
           if (cell->is_locally_owned() &&
               !specimen.deleted[cell->active_cell_index()])
@@ -78,24 +79,43 @@ namespace masonry
                   volume += fe_values.JxW(q);
                 }
               mean /= volume;
-              const double       e1 = eigenvalues(mean)[0];
+              const auto         e  = eigenvalues(mean);
+              const double       e1 = e[0];
               const unsigned int c  = cell->active_cell_index();
-              if (e1 <= settings.deletion_strain)
+              const bool         split =
+                crushing > 0 && specimen.split_shortening[c] >= 0;
+              if (e1 <= settings.deletion_strain && !split)
                 continue;
-              if (opening <= 0)
+              if (opening <= 0 && crushing <= 0)
                 {
                   candidates.emplace_back(e1, c);
                   continue;
                 }
               // the fade: linear in the opening past the threshold (the
-              // strain over the crack band of the cell), never back up
-              const double f = 1 - (e1 - settings.deletion_strain) *
-                                     specimen.cell_length[c] / opening;
+              // strain over the crack band of the cell) and in the
+              // shortening since the cell split, never back up
+              const double l = specimen.cell_length[c];
+              double       f = 1;
+              if (opening > 0 && e1 > settings.deletion_strain)
+                f = 1 - (e1 - settings.deletion_strain) * l / opening;
+              if (crushing > 0)
+                {
+                  // the largest shortening (compressive principal strain)
+                  const double shortening = -e[2];
+                  if (!split)
+                    splits.emplace_back(shortening, c);
+                  const double since =
+                    split ? shortening - specimen.split_shortening[c] : 0.;
+                  f = std::min(f, 1 - std::max(since, 0.) * l / crushing);
+                }
               if (f <= 0)
                 candidates.emplace_back(e1, c);
               else if (f < specimen.fade[c])
                 fades.emplace_back(f, c);
             }
+        for (const auto &part : Utilities::MPI::all_gather(system.comm, splits))
+          for (const auto &[shortening, c] : part)
+            specimen.split_shortening[c] = std::max(shortening, 0.);
         for (const auto &part : Utilities::MPI::all_gather(system.comm, fades))
           for (const auto &[f, c] : part)
             {

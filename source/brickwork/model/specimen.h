@@ -30,6 +30,10 @@ namespace masonry
          * it fades out before deletion (`Deletion fade opening'; 1:
          * intact). */
         std::vector<double> fade;
+        /** Per active cell: its shortening (largest compressive principal
+         * strain) when it passed `Deletion strain', the origin of its
+         * crushing fade (`Deletion crushing length'); -1: not yet. */
+        std::vector<double> split_shortening;
         /** Per active cell: BrickPoint::region (0 unit, 1 mortar: the cells
          * of material id n_bricks in the detailed model). */
         std::vector<unsigned char> cell_region;
@@ -45,7 +49,7 @@ namespace masonry
         void
         serialize(Archive &ar, const unsigned int)
         {
-          ar &n_deleted &deleted &face_deleted &fade;
+          ar &n_deleted &deleted &face_deleted &fade &split_shortening;
         }
       };
 

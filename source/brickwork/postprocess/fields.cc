@@ -114,8 +114,10 @@ namespace masonry
                    "subdomain"};
           names.insert(names.end(), reported.begin(), reported.end());
           const unsigned int first_reported = 7;
-          const bool fading = view.settings.specimen.deletion_strain > 0 &&
-                              view.settings.specimen.deletion_fade_opening > 0;
+          const bool         fading =
+            view.settings.specimen.deletion_strain > 0 &&
+            (view.settings.specimen.deletion_fade_opening > 0 ||
+             view.settings.specimen.deletion_crushing_length > 0);
           if (fading)
             names.emplace_back("fade");
           if (view.settings.specimen.deletion_strain > 0)
