@@ -63,7 +63,8 @@ namespace masonry
                               update_gradients | update_JxW_values);
         std::vector<SymmetricTensor<2, 3>>           eps(8);
         const FEValuesExtractors::Vector             displacement(0);
-        std::vector<std::pair<double, unsigned int>> candidates, fades, splits;
+        std::vector<std::pair<double, unsigned int>> candidates, fades, splits,
+          shortenings;
         for (const auto &cell : system.dof_handler.active_cell_iterators())
           if (cell->is_locally_owned() &&
               !specimen.deleted[cell->active_cell_index()])
@@ -82,7 +83,9 @@ namespace masonry
               const auto         e  = eigenvalues(mean);
               const double       e1 = e[0];
               const unsigned int c  = cell->active_cell_index();
-              const bool         split =
+              if (crushing > 0 && -e[2] > specimen.max_shortening[c])
+                shortenings.emplace_back(-e[2], c);
+              const bool split =
                 crushing > 0 && specimen.split_shortening[c] >= 0;
               if (e1 <= settings.deletion_strain && !split)
                 continue;
@@ -101,7 +104,11 @@ namespace masonry
               if (crushing > 0)
                 {
                   // the largest shortening (compressive principal strain)
-                  const double shortening = -e[2];
+                  // the cell has had: a cell that splits while unloaded
+                  // crushes only past the shortening it has already
+                  // carried
+                  const double shortening =
+                    std::max(-e[2], specimen.max_shortening[c]);
                   if (!split)
                     splits.emplace_back(shortening, c);
                   const double since =
@@ -113,6 +120,10 @@ namespace masonry
               else if (f < specimen.fade[c])
                 fades.emplace_back(f, c);
             }
+        for (const auto &part :
+             Utilities::MPI::all_gather(system.comm, shortenings))
+          for (const auto &[shortening, c] : part)
+            specimen.max_shortening[c] = shortening;
         for (const auto &part : Utilities::MPI::all_gather(system.comm, splits))
           for (const auto &[shortening, c] : part)
             specimen.split_shortening[c] = std::max(shortening, 0.);

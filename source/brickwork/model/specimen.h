@@ -34,6 +34,9 @@ namespace masonry
          * strain) when it passed `Deletion strain', the origin of its
          * crushing fade (`Deletion crushing length'); -1: not yet. */
         std::vector<double> split_shortening;
+        /** Per active cell: the largest shortening it has had (with
+         * `Deletion crushing length' > 0). */
+        std::vector<double> max_shortening;
         /** Per active cell: BrickPoint::region (0 unit, 1 mortar: the cells
          * of material id n_bricks in the detailed model). */
         std::vector<unsigned char> cell_region;
@@ -49,7 +52,8 @@ namespace masonry
         void
         serialize(Archive &ar, const unsigned int)
         {
-          ar &n_deleted &deleted &face_deleted &fade &split_shortening;
+          ar &n_deleted &deleted &face_deleted &fade &split_shortening
+            &max_shortening;
         }
       };
 
