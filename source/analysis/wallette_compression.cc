@@ -411,6 +411,32 @@ namespace masonry
           "cell go with it, and nodes left without a cell are held where "
           "they are. 0: no deletion. Deleted cells are flagged in "
           "solution.pvd (`deleted') and counted in curve.csv.");
+        prm.declare_entry(
+          "Deletion fade opening",
+          "0",
+          Double(0),
+          "Gradual deletion, m (>= 0): a cell past `Deletion strain' fades "
+          "out instead of going at once: its stress and stiffness are "
+          "scaled by 1 - (e1 - Deletion strain) l / this, with e1 the "
+          "largest cell-averaged principal strain it has reached and l the "
+          "cube root of its volume (crack band: the fade ends at the same "
+          "lateral opening whatever the mesh); it is deleted when the "
+          "factor reaches 0, then carrying nothing. 0: deleted at once. "
+          "The fade of every cell is written to solution.pvd (`fade').");
+        prm.declare_entry(
+          "Deletion crushing length",
+          "0",
+          Double(0),
+          "Crushing of split cells, m (>= 0): a cell past `Deletion "
+          "strain' (split) also fades with its shortening since then: its "
+          "factor is at most 1 - (s - s_split) l / this, with s the largest "
+          "compressive principal strain of the cell, s_split its value when "
+          "the cell passed `Deletion strain' and l the cube root of the "
+          "cell's volume (crack band: the split column crushes over this "
+          "shortening whatever the mesh; a cell at stress f fading linearly "
+          "dissipates f x this / 2 per unit area, so 2 G_fc / f_b gives the "
+          "unit's compressive fracture energy); it is deleted when the "
+          "factor reaches 0. 0: no crushing fade.");
         prm.declare_entry("Maximum deletions per step",
                           "10",
                           Integer(1, 100000),
@@ -556,6 +582,10 @@ namespace masonry
         s.protocol.unloading_stress = prm.get_double("Unloading stress");
         s.protocol.platen_speed     = positive("Platen speed");
         s.specimen.deletion_strain  = prm.get_double("Deletion strain");
+        s.specimen.deletion_fade_opening =
+          prm.get_double("Deletion fade opening");
+        s.specimen.deletion_crushing_length =
+          prm.get_double("Deletion crushing length");
         s.specimen.max_deletions =
           prm.get_integer("Maximum deletions per step");
         s.specimen.strength_scatter = prm.get_double("Strength scatter");

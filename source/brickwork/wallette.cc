@@ -456,8 +456,15 @@ namespace masonry
                                     taken / progress.last_increment :
                                     0.);
             unsigned int its = 0;
-            const bool   ok  = newton.solve_step(
-              system, *assembler, *solver, next, time_step, its, non_finite);
+            std::string  failure;
+            const bool   ok = newton.solve_step(system,
+                                              *assembler,
+                                              *solver,
+                                              next,
+                                              time_step,
+                                              its,
+                                              non_finite,
+                                              failure);
             statistics.total_newton += its;
             if (!ok)
               {
@@ -466,33 +473,46 @@ namespace masonry
                 // a converged step resets the consecutive count, so the
                 // step is also bounded below: otherwise tiny converged
                 // steps between failures halve it without end
-                if (++consecutive_cutbacks > settings.protocol.max_cutbacks ||
-                    progress.increment <
-                      std::ldexp(nominal, -int(settings.protocol.max_cutbacks)))
+                const double lower_bound =
+                  std::ldexp(nominal, -int(settings.protocol.max_cutbacks));
+                const bool too_many =
+                  ++consecutive_cutbacks > settings.protocol.max_cutbacks;
+                if (too_many || progress.increment < lower_bound)
                   {
+                    // why the step control gave up, honestly: the count
+                    // restarts at every converged step, the bound does not
+                    std::ostringstream why;
+                    why << consecutive_cutbacks - 1
+                        << " halvings since the last converged step, "
+                        << statistics.total_cutbacks
+                        << " failed attempts in the run";
+                    if (too_many)
+                      why << "; `Maximum cut-backs' = "
+                          << settings.protocol.max_cutbacks
+                          << " halvings in a row did not help";
+                    else
+                      why << "; the step reached its lower bound, the "
+                             "nominal step / 2^`Maximum cut-backs' = "
+                          << lower_bound << " m";
                     std::ostringstream m;
                     if (!non_finite.empty())
                       {
                         // a smaller step did not help: a bad model
                         m << "a number that is not finite (nan or inf) in "
                           << non_finite << " at platen displacement " << next
-                          << " m, also with a step of " << taken << " m after "
-                          << consecutive_cutbacks - 1
-                          << " consecutive halvings (last converged: "
-                          << applied << " m); check "
-                          << likely_entries(non_finite)
+                          << " m, also with a step of " << taken << " m ("
+                          << why.str() << "; last converged: " << applied
+                          << " m); check " << likely_entries(non_finite)
                           << "; results up to there are written";
                         status = "failed";
                       }
                     else
                       {
                         m << "no convergence at platen displacement " << next
-                          << " m with a step of " << taken << " m after "
-                          << consecutive_cutbacks - 1
-                          << " consecutive halvings (`Maximum cut-backs' = "
-                          << settings.protocol.max_cutbacks
-                          << "; last converged: " << applied
-                          << " m); results up to there are written";
+                          << " m with a step of " << taken << " m ("
+                          << why.str() << "; last converged: " << applied
+                          << " m); the last attempt: " << failure
+                          << "; results up to there are written";
                         status = "not converged";
                       }
                     message = m.str();
@@ -538,9 +558,10 @@ namespace masonry
             progress.applied = next;
             ++progress.step;
             ++steps_this_run;
+            unsigned int       faded = 0;
             const unsigned int removed =
-              delete_cells(settings.specimen, joints, system, specimen);
-            if (removed > 0)
+              delete_cells(settings.specimen, joints, system, specimen, faded);
+            if (removed > 0 || faded > 0)
               {
                 assembler->invalidate();
                 solver->forget();

@@ -127,6 +127,8 @@ namespace masonry
         {"Wallette/Target strain", 0, 1, "(dimensionless)"},
         {"Wallette/Amplitude increment", 0, 1, "(dimensionless)"},
         {"Wallette/Deletion strain", 0, 10, "(dimensionless)"},
+        {"Wallette/Deletion fade opening", 0, 1, "m"},
+        {"Wallette/Deletion crushing length", 0, 1, "m"},
         {"Wallette/Gauge length", 0, 100, "m"},
         // a tolerance below 1e-6 redoes the same step forever
         {"Wallette/IMPL-EX damage tolerance", 1e-6, 1, "(dimensionless)"},

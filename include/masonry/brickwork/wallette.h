@@ -164,6 +164,17 @@ namespace masonry
       /** Remove cells whose maximum principal strain exceeds
        * deletion_strain after a converged step (0: never). */
       double deletion_strain = 0;
+      /** Past deletion_strain a cell fades out: its stress and stiffness
+       * are scaled by 1 - (e1 - deletion_strain) l / deletion_fade_opening
+       * (l: cube root of its volume, e1: the largest cell-averaged
+       * principal strain so far), and it is deleted when the factor
+       * reaches 0, m (0: deleted at once). */
+      double deletion_fade_opening = 0;
+      /** Past deletion_strain a cell also fades with its shortening since
+       * then: the factor is at most 1 - (s - s_split) l /
+       * deletion_crushing_length (s: largest compressive principal strain
+       * of the cell), m (0: no crushing fade). */
+      double deletion_crushing_length = 0;
       /** At most this many cells are deleted after one step. */
       unsigned int max_deletions = 10;
       /** Coefficient of variation of the strengths of bricks and joints

@@ -72,6 +72,9 @@ namespace masonry
           bool initial = true;
           /** non_finite_bits of the item. */
           unsigned int non_finite = 0;
+          /** The factor of a brick cell fading out before its deletion
+           * (Specimen::fade): f and the matrix are scaled by it. */
+          double fade = 1;
         };
       } // namespace
 
@@ -319,6 +322,14 @@ namespace masonry
               brick_cell(
                 s.fe_values, s.strain, c, point, with_matrix, copy.f, copy.k);
             }
+          // a cell fading out before its deletion
+          copy.fade = parts.specimen.fade[c];
+          if (copy.fade < 1)
+            {
+              copy.f *= copy.fade;
+              if (!copy.cached && with_matrix)
+                copy.k *= copy.fade;
+            }
           copy.non_finite = all_finite(copy.f) ? 0u : 1u;
         };
         const auto copier = [&](const LocalContribution &copy) {
@@ -328,7 +339,14 @@ namespace masonry
           system.f_int.add(copy.dofs, copy.f);
           if (copy.cached)
             {
-              if (with_matrix && !bricks_assembled)
+              if (with_matrix && !bricks_assembled && copy.fade < 1)
+                {
+                  FullMatrix<double> k(*copy.cached);
+                  k *= copy.fade;
+                  system.zero_constraints.distribute_local_to_global(
+                    k, copy.dofs, system.matrix);
+                }
+              else if (with_matrix && !bricks_assembled)
                 system.zero_constraints.distribute_local_to_global(
                   *copy.cached, copy.dofs, system.matrix);
               if (!linear)

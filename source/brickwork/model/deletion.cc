@@ -17,6 +17,13 @@ namespace masonry
     {
       using namespace dealii;
 
+      namespace
+      {
+        /** The factor of a cell at the end of its fade that waits for its
+         * deletion (the cap per step): small, but keeps its nodes held. */
+        constexpr double fade_floor = 1e-3;
+      } // namespace
+
       std::vector<types::global_dof_index>
       orphan_dofs(const System &system, const Specimen &specimen)
       {
@@ -40,10 +47,14 @@ namespace masonry
       delete_cells(const SpecimenSettings &settings,
                    const Joints           &joints,
                    System                 &system,
-                   Specimen               &specimen)
+                   Specimen               &specimen,
+                   unsigned int           &faded)
       {
+        faded = 0;
         if (settings.deletion_strain <= 0)
           return 0;
+        const double opening  = settings.deletion_fade_opening;
+        const double crushing = settings.deletion_crushing_length;
         // maximum principal strain of the cell-averaged strain
         system.ghosted = system.u;
         QGauss<3>                                    quadrature(2);
@@ -52,7 +63,8 @@ namespace masonry
                               update_gradients | update_JxW_values);
         std::vector<SymmetricTensor<2, 3>>           eps(8);
         const FEValuesExtractors::Vector             displacement(0);
-        std::vector<std::pair<double, unsigned int>> candidates;
+        std::vector<std::pair<double, unsigned int>> candidates, fades, splits,
+          shortenings;
         for (const auto &cell : system.dof_handler.active_cell_iterators())
           if (cell->is_locally_owned() &&
               !specimen.deleted[cell->active_cell_index()])
@@ -68,9 +80,58 @@ namespace masonry
                   volume += fe_values.JxW(q);
                 }
               mean /= volume;
-              const double e1 = eigenvalues(mean)[0];
-              if (e1 > settings.deletion_strain)
-                candidates.emplace_back(e1, cell->active_cell_index());
+              const auto         e  = eigenvalues(mean);
+              const double       e1 = e[0];
+              const unsigned int c  = cell->active_cell_index();
+              if (crushing > 0 && -e[2] > specimen.max_shortening[c])
+                shortenings.emplace_back(-e[2], c);
+              const bool split =
+                crushing > 0 && specimen.split_shortening[c] >= 0;
+              if (e1 <= settings.deletion_strain && !split)
+                continue;
+              if (opening <= 0 && crushing <= 0)
+                {
+                  candidates.emplace_back(e1, c);
+                  continue;
+                }
+              // the fade: linear in the opening past the threshold (the
+              // strain over the crack band of the cell) and in the
+              // shortening since the cell split, never back up
+              const double l = specimen.cell_length[c];
+              double       f = 1;
+              if (opening > 0 && e1 > settings.deletion_strain)
+                f = 1 - (e1 - settings.deletion_strain) * l / opening;
+              if (crushing > 0)
+                {
+                  // the largest shortening (compressive principal strain)
+                  // the cell has had: a cell that splits while unloaded
+                  // crushes only past the shortening it has already
+                  // carried
+                  const double shortening =
+                    std::max(-e[2], specimen.max_shortening[c]);
+                  if (!split)
+                    splits.emplace_back(shortening, c);
+                  const double since =
+                    split ? shortening - specimen.split_shortening[c] : 0.;
+                  f = std::min(f, 1 - std::max(since, 0.) * l / crushing);
+                }
+              if (f <= 0)
+                candidates.emplace_back(e1, c);
+              else if (f < specimen.fade[c])
+                fades.emplace_back(f, c);
+            }
+        for (const auto &part :
+             Utilities::MPI::all_gather(system.comm, shortenings))
+          for (const auto &[shortening, c] : part)
+            specimen.max_shortening[c] = shortening;
+        for (const auto &part : Utilities::MPI::all_gather(system.comm, splits))
+          for (const auto &[shortening, c] : part)
+            specimen.split_shortening[c] = std::max(shortening, 0.);
+        for (const auto &part : Utilities::MPI::all_gather(system.comm, fades))
+          for (const auto &[f, c] : part)
+            {
+              specimen.fade[c] = f;
+              ++faded;
             }
         // the same decision on every rank: largest strains first, capped
         std::vector<std::pair<double, unsigned int>> all;
@@ -82,7 +143,16 @@ namespace masonry
                  (a.first == b.first && a.second < b.second);
         });
         if (all.size() > settings.max_deletions)
-          all.resize(settings.max_deletions);
+          {
+            // faded out but over the cap: nearly nothing until deleted
+            for (unsigned int k = settings.max_deletions; k < all.size(); ++k)
+              if (specimen.fade[all[k].second] > fade_floor)
+                {
+                  specimen.fade[all[k].second] = fade_floor;
+                  ++faded;
+                }
+            all.resize(settings.max_deletions);
+          }
         if (all.empty())
           return 0;
         for (const auto &c : all)

@@ -11,8 +11,11 @@
 
 #include <Amesos.h>
 #include <Amesos_BaseSolver.h>
+#include <Amesos_Mumps.h>
 #include <Epetra_LinearProblem.h>
 #include <chrono>
+#include <iostream>
+#include <sstream>
 
 namespace masonry
 {
@@ -44,6 +47,53 @@ namespace masonry
 
       namespace
       {
+        /** What MUMPS's INFOG(1) < 0 means (MUMPS users' guide, section
+         * Error diagnostics; the ones a tangent can cause). */
+        std::string
+        mumps_meaning(const int infog1)
+        {
+          switch (infog1)
+            {
+              case -6:
+                return "the matrix is structurally singular";
+              case -9:
+              case -8:
+              case -14:
+              case -15:
+                return "its workspace was too small (pivots were delayed: the "
+                       "matrix is nearly singular)";
+              case -10:
+                return "the matrix is numerically singular";
+              case -13:
+              case -5:
+              case -7:
+                return "out of memory";
+              default:
+                return "see the MUMPS users' guide";
+            }
+        }
+
+        /** Runs @p f with std::cerr diverted (Amesos writes its errors
+         * there); what it wrote. */
+        template <class F>
+        std::string
+        quietly(const F &f, int &result)
+        {
+          std::ostringstream captured;
+          std::streambuf    *kept = std::cerr.rdbuf(captured.rdbuf());
+          try
+            {
+              result = f();
+            }
+          catch (...)
+            {
+              std::cerr.rdbuf(kept);
+              throw;
+            }
+          std::cerr.rdbuf(kept);
+          return captured.str();
+        }
+
         /** Amesos on the matrix, whose sparsity never changes, so the
          * symbolic analysis (ordering) is done once and every new tangent
          * only costs a numeric factorisation. */
@@ -104,9 +154,10 @@ namespace masonry
             AssertThrow(direct != nullptr,
                         ExcMessage(name +
                                    " is not available in this Trilinos"));
-            AssertThrow(direct->SymbolicFactorization() == 0,
-                        ExcMessage("the symbolic analysis of the direct "
-                                   "solver failed"));
+            int result = 0;
+            quietly([&]() { return direct->SymbolicFactorization(); }, result);
+            if (result != 0 || failed())
+              fail("could not analyse the tangent");
           }
 
           void
@@ -115,19 +166,49 @@ namespace masonry
                      const bool            factorise,
                      const bool            initial_tangent)
           {
+            int result = 0;
             if (factorise)
               {
-                AssertThrow(direct->NumericFactorization() == 0,
-                            ExcMessage("the direct solver could not "
-                                       "factorise the tangent (singular "
-                                       "matrix?)"));
+                // (a failed factorisation is no longer the kept one)
+                is_initial = false;
+                quietly([&]() { return direct->NumericFactorization(); },
+                        result);
+                if (result != 0 || failed())
+                  fail("could not factorise the tangent");
                 is_initial = initial_tangent;
               }
             problem.SetLHS(&du.trilinos_vector());
             problem.SetRHS(
               const_cast<Epetra_MultiVector *>(&rhs.trilinos_vector()));
-            AssertThrow(direct->Solve() == 0,
-                        ExcMessage("the direct solver failed"));
+            quietly([&]() { return direct->Solve(); }, result);
+            if (result != 0 || failed())
+              fail("failed in the solve with the factorised tangent");
+          }
+
+          /** Whether MUMPS reported an error (INFOG(1) < 0). */
+          bool
+          failed()
+          {
+            const auto mumps = dynamic_cast<Amesos_Mumps *>(direct.get());
+            return mumps != nullptr && mumps->GetINFOG()[0] < 0;
+          }
+
+          /** A one-line error of the solver, with MUMPS's INFOG. */
+          [[noreturn]] void
+          fail(const std::string &what)
+          {
+            std::ostringstream m;
+            const auto mumps = dynamic_cast<Amesos_Mumps *>(direct.get());
+            if (mumps != nullptr)
+              {
+                const int *infog = mumps->GetINFOG();
+                m << "MUMPS " << what << ": INFOG(1) = " << infog[0]
+                  << ", INFOG(2) = " << infog[1] << " ("
+                  << mumps_meaning(infog[0]) << ")";
+              }
+            else
+              m << name << " " << what;
+            throw LinearSolverFailure(m.str());
           }
 
           std::string                        name;

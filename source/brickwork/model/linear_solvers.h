@@ -13,6 +13,7 @@
 #include <deal.II/base/conditional_ostream.h>
 
 #include <memory>
+#include <stdexcept>
 
 #include "system.h"
 
@@ -30,6 +31,14 @@ namespace masonry
         unsigned int n_direct_fallbacks = 0;
         /** Wall time in solves, s. */
         double seconds = 0;
+      };
+
+      /** A linear solve that failed: a one-line message (MUMPS: its
+       * INFOG(1), INFOG(2) and what they mean). */
+      class LinearSolverFailure : public std::runtime_error
+      {
+      public:
+        using std::runtime_error::runtime_error;
       };
 
       /** Solves system.matrix du = rhs. */

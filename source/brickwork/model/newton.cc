@@ -5,6 +5,7 @@
 #include "newton.h"
 
 #include <cmath>
+#include <sstream>
 
 namespace masonry
 {
@@ -12,6 +13,31 @@ namespace masonry
   {
     namespace model
     {
+      namespace
+      {
+        /** The message of an exception in one line: deal.II's carry the
+         * place in the source first, then `Additional information:'. */
+        std::string
+        first_line(const std::string &what)
+        {
+          std::string  m   = what;
+          const size_t add = m.find("Additional information:");
+          if (add != std::string::npos)
+            m = m.substr(add + 23);
+          std::string line;
+          for (const char c : m)
+            if (c == '\n')
+              line += line.empty() || line.back() == ' ' ? "" : " ";
+            else
+              line += c;
+          while (!line.empty() && line.front() == ' ')
+            line.erase(0, 1);
+          while (!line.empty() && (line.back() == ' ' || line.back() == '-'))
+            line.pop_back();
+          return line.empty() ? "an error" : line;
+        }
+      } // namespace
+
       Newton::Newton(const NewtonSettings &settings, const double minimum_force)
         : settings(settings)
         , minimum_force(minimum_force)
@@ -36,12 +62,17 @@ namespace masonry
                          const double  displacement,
                          const double  time_step,
                          unsigned int &iterations,
-                         std::string  &non_finite) const
+                         std::string  &non_finite,
+                         std::string  &failure) const
       {
         non_finite.clear();
+        failure.clear();
+        const auto iteration = [&]() {
+          return " (Newton iteration " + std::to_string(iterations) + ")";
+        };
         const auto at = [&](const std::string &what) {
-          non_finite =
-            what + " (Newton iteration " + std::to_string(iterations) + ")";
+          non_finite = what + iteration();
+          failure    = "a number that is not finite in " + non_finite;
         };
         system.set_platen(system.u, displacement);
         System::Vector r(system.owned, system.comm),
@@ -68,14 +99,27 @@ namespace masonry
                 if (converged(norm, all))
                   return true;
                 if (iterations == settings.max_newton)
-                  return false;
+                  {
+                    std::ostringstream m;
+                    m << "the residual was still " << norm
+                      << " N after `Maximum Newton iterations' = "
+                      << settings.max_newton;
+                    failure = m.str();
+                    return false;
+                  }
                 du = 0;
                 try
                   {
                     solver.solve(system, du, r, assembler.initial_tangent());
                   }
-                catch (const std::exception &)
+                catch (const LinearSolverFailure &e)
                   {
+                    failure = e.what() + iteration();
+                    return false;
+                  }
+                catch (const std::exception &e)
+                  {
+                    failure = first_line(e.what()) + iteration();
                     return false;
                   }
                 if (!std::isfinite(du.l2_norm()))
@@ -95,8 +139,9 @@ namespace masonry
                   }
               }
           }
-        catch (const std::exception &)
+        catch (const std::exception &e)
           {
+            failure = first_line(e.what()) + iteration();
             return false;
           }
         return false;

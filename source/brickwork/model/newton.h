@@ -37,7 +37,10 @@ namespace masonry
          * convergence (the caller cuts the step back). A step that failed on
          * a number that is not finite names where in @p non_finite (else
          * it is left empty): "the stresses of the bricks (Newton iteration
-         * 2)", ...
+         * 2)", ...; @p failure: why a step that did not converge failed,
+         * in a few words ("MUMPS could not factorise the tangent: INFOG(1)
+         * = -10, ... (Newton iteration 3)", "the residual ... after 50
+         * Newton iterations").
          */
         bool
         solve_step(System       &system,
@@ -46,7 +49,8 @@ namespace masonry
                    const double  displacement,
                    const double  time_step,
                    unsigned int &iterations,
-                   std::string  &non_finite) const;
+                   std::string  &non_finite,
+                   std::string  &failure) const;
 
       private:
         /** Whether the residual @p norm is small against the reactions

@@ -27,6 +27,9 @@ namespace masonry
         s.cell_length.assign(n_cells, 0);
         s.cell_factor.assign(n_cells, 1);
         s.deleted.assign(n_cells, 0);
+        s.fade.assign(n_cells, 1);
+        s.split_shortening.assign(n_cells, -1);
+        s.max_shortening.assign(n_cells, 0);
         s.face_factor.assign(faces.size(), 1);
         s.face_deleted.assign(faces.size(), 0);
         std::mt19937                     random(settings.seed);

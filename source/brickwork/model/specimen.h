@@ -26,6 +26,17 @@ namespace masonry
          * deleted. */
         std::vector<double> cell_length, cell_factor;
         std::vector<char>   deleted;
+        /** Per active cell: the factor on its stress and stiffness while
+         * it fades out before deletion (`Deletion fade opening'; 1:
+         * intact). */
+        std::vector<double> fade;
+        /** Per active cell: its shortening (largest compressive principal
+         * strain) when it passed `Deletion strain', the origin of its
+         * crushing fade (`Deletion crushing length'); -1: not yet. */
+        std::vector<double> split_shortening;
+        /** Per active cell: the largest shortening it has had (with
+         * `Deletion crushing length' > 0). */
+        std::vector<double> max_shortening;
         /** Per active cell: BrickPoint::region (0 unit, 1 mortar: the cells
          * of material id n_bricks in the detailed model). */
         std::vector<unsigned char> cell_region;
@@ -41,7 +52,8 @@ namespace masonry
         void
         serialize(Archive &ar, const unsigned int)
         {
-          ar &n_deleted &deleted &face_deleted;
+          ar &n_deleted &deleted &face_deleted &fade &split_shortening
+            &max_shortening;
         }
       };
 

@@ -114,6 +114,12 @@ namespace masonry
                    "subdomain"};
           names.insert(names.end(), reported.begin(), reported.end());
           const unsigned int first_reported = 7;
+          const bool         fading =
+            view.settings.specimen.deletion_strain > 0 &&
+            (view.settings.specimen.deletion_fade_opening > 0 ||
+             view.settings.specimen.deletion_crushing_length > 0);
+          if (fading)
+            names.emplace_back("fade");
           if (view.settings.specimen.deletion_strain > 0)
             names.emplace_back("deleted");
           // the detailed model: 0 unit, 1 mortar
@@ -140,6 +146,9 @@ namespace masonry
                 if (view.settings.specimen.deletion_strain > 0)
                   fields[names.size() - 1 - regions][c] =
                     view.specimen.deleted[c];
+                if (fading)
+                  fields[names.size() - 2 - regions][c] =
+                    view.specimen.deleted[c] ? 0. : view.specimen.fade[c];
                 if (view.specimen.deleted[c])
                   continue;
                 fe_values.reinit(cell);
@@ -168,7 +177,7 @@ namespace masonry
                         for (unsigned int k = 0; k < values.size(); ++k)
                           fields[first_reported + k][c] += values[k] / 8;
                       }
-                    mean += sigma / 8;
+                    mean += view.specimen.fade[c] * sigma / 8;
                   }
                 const unsigned int ij[6][2] = {
                   {0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {0, 2}};
