@@ -3,6 +3,7 @@
  * Assembly of bricks and joints.
  */
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/work_stream.h>
 
 #include "assembler.h"
 
@@ -29,6 +30,49 @@ namespace masonry
               return false;
           return true;
         }
+
+        /** A thread's work space for the brick cells. */
+        struct BrickScratch
+        {
+          explicit BrickScratch(const FiniteElement<3> &fe)
+            : fe_values(fe, QGauss<3>(2), update_gradients | update_JxW_values)
+          {}
+          BrickScratch(const BrickScratch &other)
+            : BrickScratch(other.fe_values.get_fe())
+          {}
+          FEValues<3>                          fe_values;
+          Vector<double>                       ue = Vector<double>(24);
+          std::array<SymmetricTensor<2, 3>, 8> strain;
+        };
+
+        /** A thread's work space for the interfaces. */
+        struct JointScratch
+        {
+          Vector<double> ue = Vector<double>(24);
+          std::array<Local3, InterfaceElement::n_points>  jumps, tractions;
+          std::array<Local33, InterfaceElement::n_points> tangents;
+          std::vector<double>                             damages;
+        };
+
+        /** One cell's or interface's force and matrix, summed in order. */
+        struct LocalContribution
+        {
+          /** The item is assembled (owned and not deleted). */
+          bool active = false;
+          /** The interface's joint face number. */
+          unsigned int index = 0;
+          /** The elastic matrix used (the law was not evaluated), or
+           * nullptr: k holds the tangent. */
+          const FullMatrix<double>            *cached = nullptr;
+          std::vector<types::global_dof_index> dofs =
+            std::vector<types::global_dof_index>(24);
+          Vector<double>     f = Vector<double>(24);
+          FullMatrix<double> k = FullMatrix<double>(24, 24);
+          /** The interface's tangent and states are the initial ones. */
+          bool initial = true;
+          /** non_finite_bits of the item. */
+          unsigned int non_finite = 0;
+        };
       } // namespace
 
       std::string
@@ -223,78 +267,87 @@ namespace masonry
                                  const bool   bricks_assembled,
                                  const double time_step)
       {
-        System                              &system   = parts.system;
-        const BrickMaterial                 &material = parts.material;
-        const bool                           linear   = material.is_linear();
-        std::vector<types::global_dof_index> dofs(24);
-        Vector<double>                       ue(24), fe_local(24);
-        FullMatrix<double>                   ke(24, 24);
-        QGauss<3>                            quadrature(2);
-        FEValues<3>                          fe_values(system.fe,
-                              quadrature,
-                              update_gradients | update_JxW_values);
-        const FEValuesExtractors::Vector     displacement(0);
-        std::array<SymmetricTensor<2, 3>, 8> strain;
-        for (const auto &cell : system.dof_handler.active_cell_iterators())
-          if (cell->is_locally_owned() &&
-              !parts.specimen.deleted[cell->active_cell_index()])
+        System                          &system   = parts.system;
+        const BrickMaterial             &material = parts.material;
+        const bool                       linear   = material.is_linear();
+        const System::Vector            &ghosted  = system.ghosted;
+        const FEValuesExtractors::Vector displacement(0);
+        // the cells' laws on the threads, the sums into f_int and the
+        // matrix in the order of the cells (results independent of the
+        // number of threads)
+        const auto worker = [&](const DoFHandler<3>::active_cell_iterator &cell,
+                                BrickScratch                              &s,
+                                LocalContribution &copy) {
+          const unsigned int c = cell->active_cell_index();
+          copy.active = cell->is_locally_owned() && !parts.specimen.deleted[c];
+          if (!copy.active)
+            return;
+          cell->get_dof_indices(copy.dofs);
+          for (unsigned int i = 0; i < 24; ++i)
+            s.ue[i] = ghosted[copy.dofs[i]];
+          bool             elastic = linear;
+          const BrickPoint point   = brick_point(c, time_step);
+          if (!linear)
             {
-              const unsigned int c = cell->active_cell_index();
-              cell->get_dof_indices(dofs);
-              for (unsigned int i = 0; i < 24; ++i)
-                ue[i] = system.ghosted[dofs[i]];
-              bool             elastic = linear;
-              const BrickPoint point   = brick_point(c, time_step);
-              if (!linear)
+              s.fe_values.reinit(cell);
+              elastic = true;
+              for (unsigned int q = 0; q < 8; ++q)
                 {
-                  fe_values.reinit(cell);
-                  elastic = true;
-                  for (unsigned int q = 0; q < 8; ++q)
-                    {
-                      strain[q] = 0;
-                      for (unsigned int i = 0; i < 24; ++i)
-                        strain[q] +=
-                          ue[i] *
-                          fe_values[displacement].symmetric_gradient(i, q);
-                      if (elastic &&
-                          !parts.integrator.brick_is_elastic(material,
-                                                             strain[q],
-                                                             parts.bricks,
-                                                             8 * c + q,
-                                                             point))
-                        elastic = false;
-                    }
+                  s.strain[q] = 0;
+                  for (unsigned int i = 0; i < 24; ++i)
+                    s.strain[q] +=
+                      s.ue[i] *
+                      s.fe_values[displacement].symmetric_gradient(i, q);
+                  if (elastic &&
+                      !parts.integrator.brick_is_elastic(
+                        material, s.strain[q], parts.bricks, 8 * c + q, point))
+                    elastic = false;
                 }
-              if (elastic)
-                {
-                  // the response cannot differ from the cached elastic one
-                  const FullMatrix<double> &k = *matrix_of_cell[c];
-                  k.vmult(fe_local, ue);
-                  if (!all_finite(fe_local))
-                    non_finite_bits |= 1u;
-                  system.f_int.add(dofs, fe_local);
-                  if (with_matrix && !bricks_assembled)
-                    system.zero_constraints.distribute_local_to_global(
-                      k, dofs, system.matrix);
-                  if (!linear)
-                    {
-                      for (unsigned int q = 0; q < 8; ++q)
-                        parts.bricks.keep(8 * c + q);
-                      ++statistics.n_elastic_cells;
-                    }
-                  continue;
-                }
-              ++statistics.n_material_cells;
-              is_initial = false;
-              brick_cell(
-                fe_values, strain, c, point, with_matrix, fe_local, ke);
-              if (!all_finite(fe_local))
-                non_finite_bits |= 1u;
-              system.f_int.add(dofs, fe_local);
-              if (with_matrix)
-                system.zero_constraints.distribute_local_to_global(
-                  ke, dofs, system.matrix);
             }
+          if (elastic)
+            {
+              // the response cannot differ from the cached elastic one
+              copy.cached = matrix_of_cell[c];
+              copy.cached->vmult(copy.f, s.ue);
+              if (!linear)
+                for (unsigned int q = 0; q < 8; ++q)
+                  parts.bricks.keep(8 * c + q);
+            }
+          else
+            {
+              copy.cached = nullptr;
+              brick_cell(
+                s.fe_values, s.strain, c, point, with_matrix, copy.f, copy.k);
+            }
+          copy.non_finite = all_finite(copy.f) ? 0u : 1u;
+        };
+        const auto copier = [&](const LocalContribution &copy) {
+          if (!copy.active)
+            return;
+          non_finite_bits |= copy.non_finite;
+          system.f_int.add(copy.dofs, copy.f);
+          if (copy.cached)
+            {
+              if (with_matrix && !bricks_assembled)
+                system.zero_constraints.distribute_local_to_global(
+                  *copy.cached, copy.dofs, system.matrix);
+              if (!linear)
+                ++statistics.n_elastic_cells;
+              return;
+            }
+          ++statistics.n_material_cells;
+          is_initial = false;
+          if (with_matrix)
+            system.zero_constraints.distribute_local_to_global(copy.k,
+                                                               copy.dofs,
+                                                               system.matrix);
+        };
+        WorkStream::run(system.dof_handler.begin_active(),
+                        system.dof_handler.end(),
+                        worker,
+                        copier,
+                        BrickScratch(system.fe),
+                        LocalContribution());
       }
 
       void
@@ -366,182 +419,249 @@ namespace masonry
       void
       Assembler::assemble_joints(const bool with_matrix, const double time_step)
       {
-        System            &system = parts.system;
-        const auto        &faces  = parts.joints.faces;
-        const unsigned int n_quad = InterfaceElement::n_points;
-        FullMatrix<double> ki(24, 24);
-        Vector<double>     fi(24), ue(24);
-        InterfacePoint     point;
-        point.time_step = time_step;
-        std::array<Local3, 4>  jumps, tractions;
-        std::array<Local33, 4> tangents;
-        std::vector<double>    damages;
+        System               &system  = parts.system;
+        const auto           &faces   = parts.joints.faces;
+        const unsigned int    n_quad  = InterfaceElement::n_points;
+        const System::Vector &ghosted = system.ghosted;
+        // whether the bricks left the matrix the initial one: only then do
+        // the joints' states decide it
+        const bool                bricks_initial = is_initial;
+        std::vector<unsigned int> items;
+        items.reserve(faces.size());
         for (unsigned int n = 0; n < faces.size(); ++n)
-          {
-            const auto &face = faces[n];
-            if (!face.owned || parts.specimen.face_deleted[n])
-              continue;
+          if (faces[n].owned && !parts.specimen.face_deleted[n])
+            items.push_back(n);
+        const auto worker =
+          [&](const std::vector<unsigned int>::const_iterator &it,
+              JointScratch                                    &s,
+              LocalContribution                               &copy) {
+            const unsigned int  n      = *it;
+            const auto         &face   = faces[n];
             const InterfaceLaw &law    = parts.law_of(n);
             PointStates        &states = parts.states_of(n);
-            point.strength_factor      = parts.specimen.face_factor[n];
+            copy.active                = true;
+            copy.index                 = n;
+            copy.initial               = true;
+            InterfacePoint point;
+            point.time_step       = time_step;
+            point.strength_factor = parts.specimen.face_factor[n];
             for (unsigned int i = 0; i < 24; ++i)
-              ue[i] = system.ghosted[face.dofs[i]];
-            interface_element.jumps(face.axis, ue, jumps);
+              s.ue[i] = ghosted[face.dofs[i]];
+            interface_element.jumps(face.axis, s.ue, s.jumps);
             bool elastic = true;
             for (unsigned int q = 0; q < n_quad && elastic; ++q)
               elastic = parts.integrator.joint_is_elastic(
-                law, jumps[q], states, n_quad * n + q, point);
+                law, s.jumps[q], states, n_quad * n + q, point);
             if (elastic)
               {
                 // intact and below the onset: the cached elastic matrix
                 // gives the exact response, the law is not evaluated
-                const FullMatrix<double> &k = *matrix_of_interface[n];
-                k.vmult(fi, ue);
-                if (!all_finite(fi))
-                  non_finite_bits |= 2u;
-                system.f_int.add(face.dofs, fi);
-                if (with_matrix)
-                  system.zero_constraints.distribute_local_to_global(
-                    k, face.dofs, system.matrix);
+                copy.cached = matrix_of_interface[n];
+                copy.cached->vmult(copy.f, s.ue);
+                copy.non_finite = all_finite(copy.f) ? 0u : 2u;
                 for (unsigned int q = 0; q < n_quad; ++q)
                   parts.integrator.keep_elastic_joint(states, n_quad * n + q);
-                ++statistics.n_elastic_interfaces;
-                continue;
+                return;
               }
-            ++statistics.n_law_interfaces;
+            copy.cached = nullptr;
             for (unsigned int q = 0; q < n_quad; ++q)
               parts.integrator.joint_response(law,
-                                              jumps[q],
+                                              s.jumps[q],
                                               states,
                                               n_quad * n + q,
                                               point,
-                                              tractions[q],
-                                              tangents[q]);
+                                              s.tractions[q],
+                                              s.tangents[q]);
             interface_element.local(face.axis,
                                     face.area,
-                                    tractions,
-                                    tangents,
-                                    fi,
-                                    with_matrix ? &ki : nullptr);
+                                    s.tractions,
+                                    s.tangents,
+                                    copy.f,
+                                    with_matrix ? &copy.k : nullptr);
             // the matrix stays the initial one (its factorisation is kept)
             // only while no point is damaged and every tangent is the
             // elastic one: a law without damage (plastic slip) changes the
             // tangent too
-            if (is_initial)
+            if (bricks_initial)
               for (unsigned int q = 0; q < n_quad; ++q)
                 {
-                  damages.resize(law.damage_names().size());
+                  s.damages.resize(law.damage_names().size());
                   law.damages(parts.integrator.step_state(states,
                                                           n_quad * n + q),
-                              damages);
-                  for (const double d : damages)
+                              s.damages);
+                  for (const double d : s.damages)
                     if (d > 0)
-                      is_initial = false;
-                  if (tangents[q] != law.elastic_tangent())
-                    is_initial = false;
+                      copy.initial = false;
+                  if (s.tangents[q] != law.elastic_tangent())
+                    copy.initial = false;
                 }
-            if (!all_finite(fi))
-              non_finite_bits |= 2u;
-            system.f_int.add(face.dofs, fi);
-            if (with_matrix)
-              system.zero_constraints.distribute_local_to_global(ki,
-                                                                 face.dofs,
-                                                                 system.matrix);
-          }
+            copy.non_finite = all_finite(copy.f) ? 0u : 2u;
+          };
+        const auto copier = [&](const LocalContribution &copy) {
+          const auto &dofs = faces[copy.index].dofs;
+          non_finite_bits |= copy.non_finite;
+          system.f_int.add(dofs, copy.f);
+          if (copy.cached)
+            {
+              if (with_matrix)
+                system.zero_constraints.distribute_local_to_global(
+                  *copy.cached, dofs, system.matrix);
+              ++statistics.n_elastic_interfaces;
+              return;
+            }
+          ++statistics.n_law_interfaces;
+          if (!copy.initial)
+            is_initial = false;
+          if (with_matrix)
+            system.zero_constraints.distribute_local_to_global(copy.k,
+                                                               dofs,
+                                                               system.matrix);
+        };
+        WorkStream::run(items.cbegin(),
+                        items.cend(),
+                        worker,
+                        copier,
+                        JointScratch(),
+                        LocalContribution());
       }
 
       double
       Assembler::update_states(const Integrator &integrator,
                                const double      time_step)
       {
-        System &system  = parts.system;
-        system.ghosted  = system.u;
-        double error    = 0;
-        non_finite_bits = 0;
+        System &system                = parts.system;
+        system.ghosted                = system.u;
+        non_finite_bits               = 0;
+        const System::Vector &ghosted = system.ghosted;
         // the largest change of a damage against its extrapolation (a
-        // non-finite one is flagged: std::max would drop a NaN)
-        const auto damage_error = [&](const unsigned int   flag,
-                                      const auto          &law,
-                                      const PointStates   &states,
-                                      const unsigned int   p,
-                                      std::vector<double> &d,
-                                      std::vector<double> &d_old,
-                                      std::vector<double> &d_older) {
-          law.damages(states.updated(p), d);
-          law.damages(states.old(p), d_old);
-          law.damages(states.older(p), d_older);
-          for (unsigned int k = 0; k < d.size(); ++k)
+        // non-finite one is flagged: std::max would drop a NaN); the points
+        // on the threads, the largest change (the same in any order) and
+        // the flags gathered item by item
+        struct Change
+        {
+          double       error  = 0;
+          unsigned int flags  = 0;
+          bool         active = false;
+        };
+        struct Scratch
+        {
+          std::vector<double> d, d_old, d_older;
+        };
+        const auto damage_error = [&](const unsigned int flag,
+                                      const auto        &law,
+                                      const PointStates &states,
+                                      const unsigned int p,
+                                      Scratch           &s,
+                                      Change            &change) {
+          const unsigned int n_damages = law.damage_names().size();
+          s.d.resize(n_damages);
+          s.d_old.resize(n_damages);
+          s.d_older.resize(n_damages);
+          law.damages(states.updated(p), s.d);
+          law.damages(states.old(p), s.d_old);
+          law.damages(states.older(p), s.d_older);
+          for (unsigned int k = 0; k < n_damages; ++k)
             {
-              const double e =
-                std::abs(d[k] - integrator.extrapolated(d_old[k], d_older[k]));
+              const double e = std::abs(
+                s.d[k] - integrator.extrapolated(s.d_old[k], s.d_older[k]));
               if (!std::isfinite(e))
-                non_finite_bits |= 1u << flag;
+                change.flags |= 1u << flag;
               else
-                error = std::max(error, e);
+                change.error = std::max(change.error, e);
             }
+        };
+        double     error  = 0;
+        const auto gather = [&](const Change &change) {
+          if (!change.active)
+            return;
+          non_finite_bits |= change.flags;
+          error = std::max(error, change.error);
         };
         const BrickMaterial &material = parts.material;
         if (!material.is_linear())
           {
-            QGauss<3>   quadrature(2);
-            FEValues<3> fe_values(system.fe, quadrature, update_gradients);
-            std::vector<SymmetricTensor<2, 3>> eps(8);
-            const FEValuesExtractors::Vector   displacement(0);
-            SymmetricTensor<2, 3>              stress;
-            const unsigned int  n_damages = material.damage_names().size();
-            std::vector<double> d(n_damages), d_old(n_damages),
-              d_older(n_damages);
-            for (const auto &cell : system.dof_handler.active_cell_iterators())
-              if (cell->is_locally_owned() &&
-                  !parts.specimen.deleted[cell->active_cell_index()])
-                {
-                  const unsigned int c = cell->active_cell_index();
-                  fe_values.reinit(cell);
-                  fe_values[displacement].get_function_symmetric_gradients(
-                    system.ghosted, eps);
-                  const BrickPoint point = brick_point(c, time_step);
-                  for (unsigned int q = 0; q < 8; ++q)
-                    {
-                      const unsigned int p = 8 * c + q;
-                      material.update_state(eps[q],
-                                            parts.bricks.old(p),
-                                            point,
-                                            parts.bricks.updated(p),
-                                            stress);
-                      damage_error(
-                        2, material, parts.bricks, p, d, d_old, d_older);
-                    }
-                }
+            struct BrickScratch : Scratch
+            {
+              explicit BrickScratch(const FiniteElement<3> &fe)
+                : fe_values(fe, QGauss<3>(2), update_gradients)
+              {}
+              BrickScratch(const BrickScratch &other)
+                : BrickScratch(other.fe_values.get_fe())
+              {}
+              FEValues<3>                        fe_values;
+              std::vector<SymmetricTensor<2, 3>> eps =
+                std::vector<SymmetricTensor<2, 3>>(8);
+            };
+            const FEValuesExtractors::Vector displacement(0);
+            const auto                       worker =
+              [&](const DoFHandler<3>::active_cell_iterator &cell,
+                  BrickScratch                              &s,
+                  Change                                    &change) {
+                const unsigned int c = cell->active_cell_index();
+                change               = Change();
+                change.active =
+                  cell->is_locally_owned() && !parts.specimen.deleted[c];
+                if (!change.active)
+                  return;
+                s.fe_values.reinit(cell);
+                s.fe_values[displacement].get_function_symmetric_gradients(
+                  ghosted, s.eps);
+                const BrickPoint      point = brick_point(c, time_step);
+                SymmetricTensor<2, 3> stress;
+                for (unsigned int q = 0; q < 8; ++q)
+                  {
+                    const unsigned int p = 8 * c + q;
+                    material.update_state(s.eps[q],
+                                          parts.bricks.old(p),
+                                          point,
+                                          parts.bricks.updated(p),
+                                          stress);
+                    damage_error(2, material, parts.bricks, p, s, change);
+                  }
+              };
+            WorkStream::run(system.dof_handler.begin_active(),
+                            system.dof_handler.end(),
+                            worker,
+                            gather,
+                            BrickScratch(system.fe),
+                            Change());
           }
-        InterfacePoint point;
-        point.time_step = time_step;
-        Local3                t;
-        Local33               D;
-        Vector<double>        ue(24);
-        std::array<Local3, 4> jumps;
-        const auto           &faces = parts.joints.faces;
+        const auto               &faces = parts.joints.faces;
+        std::vector<unsigned int> items;
+        items.reserve(faces.size());
         for (unsigned int n = 0; n < faces.size(); ++n)
-          {
-            const auto &face = faces[n];
-            if (!face.owned || parts.specimen.face_deleted[n])
-              continue;
-            const InterfaceLaw &law       = parts.law_of(n);
-            PointStates        &states    = parts.states_of(n);
-            const unsigned int  n_damages = law.damage_names().size();
-            std::vector<double> d(n_damages), d_old(n_damages),
-              d_older(n_damages);
+          if (faces[n].owned && !parts.specimen.face_deleted[n])
+            items.push_back(n);
+        const auto worker =
+          [&](const std::vector<unsigned int>::const_iterator &it,
+              Scratch                                         &s,
+              Change                                          &change) {
+            const unsigned int n       = *it;
+            change                     = Change();
+            change.active              = true;
+            const auto         &face   = faces[n];
+            const InterfaceLaw &law    = parts.law_of(n);
+            PointStates        &states = parts.states_of(n);
+            InterfacePoint      point;
+            point.time_step       = time_step;
             point.strength_factor = parts.specimen.face_factor[n];
+            Vector<double> ue(24);
             for (unsigned int i = 0; i < 24; ++i)
-              ue[i] = system.ghosted[face.dofs[i]];
+              ue[i] = ghosted[face.dofs[i]];
+            std::array<Local3, 4> jumps;
             interface_element.jumps(face.axis, ue, jumps);
+            Local3  t;
+            Local33 D;
             for (unsigned int q = 0; q < 4; ++q)
               {
                 const unsigned int p = 4 * n + q;
                 law.evaluate(
                   jumps[q], states.old(p), point, states.updated(p), t, D);
-                damage_error(3, law, states, p, d, d_old, d_older);
+                damage_error(3, law, states, p, s, change);
               }
-          }
+          };
+        WorkStream::run(
+          items.cbegin(), items.cend(), worker, gather, Scratch(), Change());
         gather_non_finite();
         if (!non_finite().empty())
           return std::numeric_limits<double>::quiet_NaN();
