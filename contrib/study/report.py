@@ -366,10 +366,12 @@ SWEEP_KEYS = ["name", "f_b", "f_m", "E_b_GPa", "E_m_GPa", "peak_MPa", "strain_at
 
 def power_fit(sweep):
     """Least-squares fit of log peak = log C + a log f_b + b log f_m over
-    the completed pairs: (C, a, b), or None with fewer than 3 pairs."""
+    the pairs that reached a peak (a run that stopped after its peak, by
+    `Maximum steps' or a failed step, counts): (C, a, b), or None with
+    fewer than 3 pairs."""
     import numpy as np
     ok = [r for r in sweep if r.get("peak_MPa", 0) > 0 and
-          r["status"] == "completed" and r.get("peak_reached")]
+          r.get("peak_reached")]
     if len(ok) < 3 or len({r["f_b"] for r in ok}) < 2 or \
             len({r["f_m"] for r in ok}) < 2:
         return None
@@ -394,9 +396,11 @@ def sweep_section(directory, sweep):
         "strain in each sweep-*.prm) for every pair of unit strength f_b "
         "and mortar strength f_m; the other unit and mortar inputs follow "
         "from f_b and f_m by the relations of contrib/study/study.py, "
-        "sweep_inputs() (unit E_b = 500 f_b, tensile strength 0.1 f_b, "
-        "with the detailed model the unit law's uniaxial strength 0.8 f_b; "
-        "mortar E_m = 200 f_m; the values of each pair: the header of "
+        "sweep_inputs() (unit: the normalised strength f_b, from which "
+        "the law derives its uniaxial strength 0.8 f_b, E_b = 400 f_b, "
+        "tensile strength 0.1 f_b; mortar E_m = 200 f_m, compressive "
+        "softening with the crushing energy 15 + 0.43 f_m - 0.0036 f_m² "
+        "N/mm; the values of each pair: the header of "
         "its sweep-*.prm; sources: doc/references-brickwork-strength.md). "
         "Target band: "
         f"{BAND[0]} × Kaushik to {BAND[1]} × EC6 mean; modulus within "

@@ -30,11 +30,40 @@ namespace masonry
                         defaults.nu,
                         Double(-1, 0.5),
                         "Poisson's ratio (dimensionless, -1 < nu < 0.5).");
-      prm.declare_entry("Compressive strength",
-                        defaults.f_c,
-                        Double(0),
-                        "Uniaxial compressive strength f_c, Pa (> 0): the "
-                        "peak of the compressive envelope.");
+      prm.declare_entry(
+        "Compressive strength",
+        defaults.f_c,
+        Double(0),
+        "Compressive strength, Pa (> 0): with `Compressive strength "
+        "definition' = uniaxial (the default) the uniaxial strength f_c of "
+        "the material, the peak of the compressive envelope; with "
+        "`normalised' the normalised compressive strength f_b of a unit "
+        "(EN 772-1: the mean strength of the tested units times the shape "
+        "factor, referred to a 100 mm cube-equivalent; the f_b of "
+        "Eurocode 6), from which the law's uniaxial strength is derived.");
+      prm.declare_entry(
+        "Compressive strength definition",
+        "uniaxial",
+        dealii::Patterns::Selection("uniaxial|normalised"),
+        "What `Compressive strength' is: `uniaxial' (the strength f_c of "
+        "the material in uniaxial compression) or `normalised' (the "
+        "normalised unit strength f_b of EN 772-1, what a laboratory "
+        "reports for a masonry unit: the strength of a 100 mm "
+        "cube-equivalent between steel platens, whose restraint raises "
+        "it above the uniaxial strength; this law does not add that "
+        "restraint, so f_c = `Uniaxial to normalised strength ratio' x "
+        "f_b, printed as the derived value "
+        "`uniaxial_compressive_strength').");
+      prm.declare_entry(
+        "Uniaxial to normalised strength ratio",
+        "0.8",
+        Double(0, 1),
+        "f_c / f_b with `Compressive strength definition' = normalised "
+        "(dimensionless, 0 < ratio <= 1). 0.8: the ratio of cylinder to "
+        "cube strength of concrete (EN 1992-1-1 strength classes, e.g. "
+        "C20/25, C40/50), taken for fired-clay units for want of a "
+        "clay-unit value (assumed; see doc/references-brickwork-"
+        "strength.md).");
       prm.declare_entry(
         "Elastic limit ratio",
         "0.4",
@@ -162,9 +191,20 @@ namespace masonry
     void
     DamagePlasticityBrick::parse_parameters(dealii::ParameterHandler &prm)
     {
-      E             = prm.get_double("Young's modulus");
-      nu            = prm.get_double("Poisson's ratio");
-      f_c           = prm.get_double("Compressive strength");
+      E            = prm.get_double("Young's modulus");
+      nu           = prm.get_double("Poisson's ratio");
+      f_c          = prm.get_double("Compressive strength");
+      f_normalised = 0;
+      if (prm.get("Compressive strength definition") == "normalised")
+        {
+          const double r =
+            prm.get_double("Uniaxial to normalised strength ratio");
+          AssertThrow(r > 0,
+                      ExcParameter("Uniaxial to normalised strength ratio",
+                                   "must be positive"));
+          f_normalised = f_c;
+          f_c          = r * f_normalised;
+        }
       ratio         = prm.get_double("Elastic limit ratio");
       eps_c         = prm.get_double("Strain at peak");
       G_c           = prm.get_double("Compressive fracture energy");
@@ -261,22 +301,41 @@ namespace masonry
     std::vector<DerivedValue>
     DamagePlasticityBrick::derived_values() const
     {
-      return {{"alpha",
-               alpha,
-               "-",
-               "(rho - 1) / (2 rho - 1) of the compressive measure "
-               "(Lubliner), rho = `Biaxial to uniaxial strength ratio'"},
-              {"elastic_limit_stress",
-               ratio * f_c,
-               "Pa",
-               "`Elastic limit ratio' x `Compressive strength'"},
-              {"confinement_coefficient",
-               (1 + 2 * alpha + gamma) / (1 - alpha),
-               "-",
-               "k = (1 + 2 alpha + gamma) / (1 - alpha): the rise of the "
-               "compressive measure's strength per unit of equal lateral "
-               "pressure, |sigma_1| = f_c + k p (gamma = 0 unless "
-               "`Confinement coefficient' is set)"}};
+      std::vector<DerivedValue> values;
+      if (f_normalised > 0)
+        {
+          values.push_back({"normalised_compressive_strength",
+                            f_normalised,
+                            "Pa",
+                            "f_b, the input `Compressive strength' "
+                            "(`Compressive strength definition' = "
+                            "normalised, EN 772-1)"});
+          values.push_back({"uniaxial_compressive_strength",
+                            f_c,
+                            "Pa",
+                            "f_c = `Uniaxial to normalised strength ratio' "
+                            "x f_b: the peak of the law's compressive "
+                            "envelope"});
+        }
+      std::vector<DerivedValue> rest = {
+        {"alpha",
+         alpha,
+         "-",
+         "(rho - 1) / (2 rho - 1) of the compressive measure "
+         "(Lubliner), rho = `Biaxial to uniaxial strength ratio'"},
+        {"elastic_limit_stress",
+         ratio * f_c,
+         "Pa",
+         "`Elastic limit ratio' x the uniaxial compressive strength f_c"},
+        {"confinement_coefficient",
+         (1 + 2 * alpha + gamma) / (1 - alpha),
+         "-",
+         "k = (1 + 2 alpha + gamma) / (1 - alpha): the rise of the "
+         "compressive measure's strength per unit of equal lateral "
+         "pressure, |sigma_1| = f_c + k p (gamma = 0 unless "
+         "`Confinement coefficient' is set)"}};
+      values.insert(values.end(), rest.begin(), rest.end());
+      return values;
     }
 
     void

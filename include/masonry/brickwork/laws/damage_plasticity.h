@@ -366,6 +366,9 @@ namespace masonry
                         const SymmetricTensor<2, 3> &strain) const;
 
       double E = 10e9, nu = 0.15, f_c = 20e6, ratio = 0.4, eps_c = 0.004;
+      /** The normalised unit strength f_b when `Compressive strength
+       * definition' = normalised (f_c is then derived from it), else 0. */
+      double f_normalised = 0;
       double G_c = 20000, b_c = 0.7, f_t = 2e6, G_f = 80, b_t = 0;
       double rho = 1.16, d_max = 0.99, mu_visc = 0;
       double alpha = 0, lambda = 0, mu = 0;
