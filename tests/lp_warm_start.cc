@@ -10,7 +10,13 @@
 // - the same cone with a_0^T x >= 1 and a_1 = -a_0: infeasible
 //   ("incompatible");
 // - random bounded LPs (lp_common.h) perturbed from one to the next, whose
-//   optimum is also computed by GLPK (an independent solver).
+//   optimum is also computed by GLPK (an independent solver);
+// - the cones again with some rows left out (a different set in each LP)
+//   and the rows identified by WarmStart::row_keys (their index in the full
+//   cone), as the bisection of `minimum thickness' does when rows implied by
+//   others are left out: a warm start from an LP with other rows. Leaving
+//   out rows can make the optimal cone unbounded, so there the status is
+//   GLPK's (and 0 is the optimum if bounded).
 
 #include "lp_common.h"
 
@@ -24,7 +30,7 @@ namespace
 
   /** The cone LP number @p k of the sequence (kind = k % 3). */
   LinearProgram
-  cone_lp(const unsigned int k, std::mt19937 &g)
+  cone_lp(const unsigned int k, std::mt19937 &g, double *mu_sum = nullptr)
   {
     std::vector<std::vector<double>> a(m_cone, std::vector<double>(n_cone));
     std::vector<double>              ray(n_cone);
@@ -52,6 +58,8 @@ namespace
       for (unsigned int i = 0; i < m_cone; ++i)
         {
           const double mu = std::floor(uniform(g, 0, 3));
+          if (mu_sum)
+            *mu_sum += mu;
           for (unsigned int j = 0; j < n_cone; ++j)
             c[j] -= mu * a[i][j];
         }
@@ -151,6 +159,61 @@ main()
             std::cout << "perturbed LP " << k
                       << ": optimum = " << round6(ref.objective) << std::endl;
         }
+      // rows left out: row i of the full cone is dropped from LP k if
+      // (i + k) % 5 == 0 (rows 0 and 1 make the infeasible kind: kept)
+      WarmStart    keyed;
+      unsigned int n_keyed_ok = 0;
+      std::mt19937 h(5);
+      for (unsigned int k = 0; k < 12; ++k)
+        {
+          double              mu_sum = 0;
+          const LinearProgram full   = cone_lp(k, h, &mu_sum);
+          LinearProgram       lp;
+          lp.maximize = true;
+          for (unsigned int j = 0; j < full.n_columns(); ++j)
+            lp.add_column(full.objective()[j], -infinity, infinity);
+          std::vector<int> row_of(full.n_rows(), -1);
+          keyed.row_keys.clear();
+          for (unsigned int i = 0; i < full.n_rows(); ++i)
+            if (i < 2 || (i + k) % 5 != 0)
+              {
+                row_of[i] =
+                  lp.add_row(full.row_lower()[i], full.row_upper()[i]);
+                keyed.row_keys.push_back(i);
+              }
+          for (const auto &e : full.entries())
+            if (row_of[e.row] >= 0)
+              lp.add_entry(row_of[e.row], e.column, e.value);
+          const Solution cold = solver->solve(lp);
+          const Solution hot  = solver->solve_warm(lp, keyed);
+          const Solution ref  = glpk->solve(lp);
+          // at the degenerate optimum 0, c^T x = -sum mu_i a_i^T x is at
+          // most sum mu_i times the largest violation of a row a_i^T x >= 0,
+          // which a simplex keeps below its primal tolerance (1e-7 in Clp)
+          const auto within = [&](const Solution &s) {
+            double violation = 0;
+            for (const double a : full.row_activities(s.x))
+              violation = std::max(violation, -a);
+            return violation <= 1e-7 &&
+                   std::abs(s.objective) <= 1e-9 + mu_sum * violation;
+          };
+          const bool ok =
+            cold.status == hot.status && cold.status == ref.status &&
+            (cold.status != Status::optimal || (within(cold) && within(hot)));
+          n_keyed_ok += ok;
+          if (!ok)
+            std::cout << "FAILED clp (" << algorithm << ") cone " << k
+                      << " with rows left out: glpk " << to_string(ref.status)
+                      << ", cold " << to_string(cold.status) << " "
+                      << cold.objective << ", warm " << to_string(hot.status)
+                      << " " << hot.objective << std::endl;
+        }
+      std::cout << (n_keyed_ok == 12 ? "OK" : "FAILED") << " clp (" << algorithm
+                << "): warm = cold = glpk on " << n_keyed_ok
+                << " of 12 cones with rows left out (rows matched by key)"
+                << (keyed.n_warm > 0 ? ", warm starts used" :
+                                       ", NO warm start used")
+                << std::endl;
       std::cout << (n_ok == n_lp ? "OK" : "FAILED") << " clp (" << algorithm
                 << "): warm = cold on " << n_ok << " of " << n_lp
                 << " LPs (4 optimal at a degenerate vertex, 4 unbounded, 4 "

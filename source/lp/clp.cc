@@ -17,6 +17,7 @@
 #include <memory>
 #include <mutex>
 #include <unistd.h>
+#include <unordered_map>
 
 namespace masonry
 {
@@ -125,7 +126,39 @@ namespace masonry
       {
         unsigned int               n_columns = 0, n_rows = 0;
         std::vector<unsigned char> status;
+        /** WarmStart::row_keys of the LP it comes from (may be empty). */
+        std::vector<long long> row_keys;
       };
+
+      /**
+       * @p stored mapped to an LP with the same columns and the rows
+       * identified by @p keys: a row takes the status of the stored row
+       * with its key, a new row's slack is basic. Clp repairs a basis with
+       * the wrong number of basic variables when it factorises it.
+       */
+      ClpBasis
+      remap(const ClpBasis &stored, const std::vector<long long> &keys)
+      {
+        ClpBasis basis;
+        basis.n_columns = stored.n_columns;
+        basis.n_rows    = keys.size();
+        basis.row_keys  = keys;
+        basis.status.assign(stored.status.begin(),
+                            stored.status.begin() + stored.n_columns);
+        std::unordered_map<long long, unsigned int> row_of;
+        row_of.reserve(stored.row_keys.size());
+        for (unsigned int i = 0; i < stored.row_keys.size(); ++i)
+          row_of.emplace(stored.row_keys[i], i);
+        for (const long long key : keys)
+          {
+            const auto i = row_of.find(key);
+            basis.status.push_back(
+              i != row_of.end() ?
+                stored.status[stored.n_columns + i->second] :
+                static_cast<unsigned char>(ClpSimplex::basic));
+          }
+        return basis;
+      }
     } // namespace
 
     /**
@@ -373,10 +406,22 @@ namespace masonry
     Solution
     Clp::solve_warm(const LinearProgram &lp, WarmStart &warm) const
     {
-      const ClpBasis *in = dynamic_cast<const ClpBasis *>(warm.data.get());
-      if (in && (in->n_columns != lp.n_columns() || in->n_rows != lp.n_rows()))
+      const ClpBasis *in    = dynamic_cast<const ClpBasis *>(warm.data.get());
+      const bool      keyed = warm.row_keys.size() == lp.n_rows() && in &&
+                         in->row_keys.size() == in->n_rows &&
+                         in->n_columns == lp.n_columns();
+      ClpBasis mapped;
+      if (keyed && warm.row_keys != in->row_keys)
+        {
+          mapped = remap(*in, warm.row_keys);
+          in     = &mapped;
+        }
+      else if (in && !keyed &&
+               (in->n_columns != lp.n_columns() || in->n_rows != lp.n_rows()))
         in = nullptr;
-      auto     out      = std::make_unique<ClpBasis>();
+      auto out = std::make_unique<ClpBasis>();
+      if (warm.row_keys.size() == lp.n_rows())
+        out->row_keys = warm.row_keys;
       Solution solution = solve(lp, in, out.get());
       if (in)
         ++warm.n_warm;

@@ -91,6 +91,16 @@ namespace masonry
     {
       /** The back-end's data; nullptr before the first optimal solve. */
       std::unique_ptr<WarmStartData> data;
+      /**
+       * Optional identity of every row of the LP passed to the next
+       * solve_warm() (e.g. contact point and component), set by the
+       * caller: then an LP with the same columns but another set of rows
+       * starts from the stored basis too, each row taking the status of
+       * the stored row with the same key (a new row's slack is basic).
+       * Empty: only an LP of the same shape starts warm, rows matched by
+       * position.
+       */
+      std::vector<long long> row_keys;
       /** Number of solves that started from a stored basis. */
       unsigned int n_warm = 0;
     };
@@ -144,7 +154,8 @@ namespace masonry
       /**
        * Solve @p lp starting from what @p warm holds from an earlier solve
        * of an LP with the same numbers of rows and columns (coefficients
-       * and bounds may differ), and store the final state in @p warm. Same
+       * and bounds may differ; with WarmStart::row_keys, the same columns
+       * and rows matched by key), and store the final state in @p warm. Same
        * optimum and status as solve() (to the solver's tolerances). The
        * default ignores @p warm and calls solve().
        */
