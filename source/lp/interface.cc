@@ -56,9 +56,13 @@ namespace masonry
         "Warm starts",
         "true",
         dealii::Patterns::Bool(),
-        "Whether a sequence of LPs of one shape (the bisection of `minimum "
-        "thickness') starts each solve from the basis of an earlier one "
-        "(Clp; GLPK always starts cold). false: every LP from scratch, for "
+        "Whether the LPs of one `minimum thickness' bisection start from the "
+        "basis of the last LP that stood (Clp: rows matched by contact point "
+        "and component, so LPs whose implied rows differ share a basis; GLPK "
+        "always starts cold). Settlement and limit-load LPs, also in a "
+        "genetic algorithm, are always solved from scratch (warm they were "
+        "slower and less accurate, doc/rigid-blocks.md). false: every LP "
+        "from scratch, for "
         "checks and timing (the same result within the LP tolerances; near "
         "a minimum thickness the starting basis can decide `stands', see "
         "doc/rigid-blocks.md). Unitless flag.");

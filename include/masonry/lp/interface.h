@@ -177,8 +177,9 @@ namespace masonry
       time_limit() const;
 
       /**
-       * Whether a caller with a sequence of LPs of one shape should call
-       * solve_warm() (entry `Warm starts`); false: solve() every time.
+       * Whether a caller with a sequence of LPs with the same columns (rows
+       * may differ, see WarmStart::row_keys) should call solve_warm()
+       * (entry `Warm starts`); false: solve() every time.
        */
       bool
       warm_starts() const;
