@@ -31,6 +31,19 @@ namespace masonry
           return true;
         }
 
+        /** The interfaces this rank assembles: owned and not deleted. */
+        std::vector<unsigned int>
+        active_faces(const AssemblyParts &parts)
+        {
+          const auto               &faces = parts.joints.faces;
+          std::vector<unsigned int> items;
+          items.reserve(faces.size());
+          for (unsigned int n = 0; n < faces.size(); ++n)
+            if (faces[n].owned && !parts.specimen.face_deleted[n])
+              items.push_back(n);
+          return items;
+        }
+
         /** A thread's work space for the brick cells. */
         struct BrickScratch
         {
@@ -443,13 +456,9 @@ namespace masonry
         const System::Vector &ghosted = system.ghosted;
         // whether the bricks left the matrix the initial one: only then do
         // the joints' states decide it
-        const bool                bricks_initial = is_initial;
-        std::vector<unsigned int> items;
-        items.reserve(faces.size());
-        for (unsigned int n = 0; n < faces.size(); ++n)
-          if (faces[n].owned && !parts.specimen.face_deleted[n])
-            items.push_back(n);
-        const auto worker =
+        const bool                      bricks_initial = is_initial;
+        const std::vector<unsigned int> items          = active_faces(parts);
+        const auto                      worker =
           [&](const std::vector<unsigned int>::const_iterator &it,
               JointScratch                                    &s,
               LocalContribution                               &copy) {
@@ -644,13 +653,9 @@ namespace masonry
                             BrickScratch(system.fe),
                             Change());
           }
-        const auto               &faces = parts.joints.faces;
-        std::vector<unsigned int> items;
-        items.reserve(faces.size());
-        for (unsigned int n = 0; n < faces.size(); ++n)
-          if (faces[n].owned && !parts.specimen.face_deleted[n])
-            items.push_back(n);
-        const auto worker =
+        const auto                     &faces = parts.joints.faces;
+        const std::vector<unsigned int> items = active_faces(parts);
+        const auto                      worker =
           [&](const std::vector<unsigned int>::const_iterator &it,
               Scratch                                         &s,
               Change                                          &change) {
