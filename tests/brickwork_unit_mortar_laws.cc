@@ -29,6 +29,13 @@
  *     plateau f_m + k p. With the flow of the elastic strain the mortar
  *     stops expanding at p = nu_m |sigma_y| / (1 - nu_m) and the prism
  *     flows at f_m / (1 - k nu_m / (1 - nu_m)) without loading the unit.
+ * (d) unit with `Cracked compression softening = 170': cracked by uniaxial
+ *     tension in x to eps_1 = 0.0008, 0.003, 0.01, 0.03, brought back to
+ *     zero stress, then compressed in y (uniaxial, parallel to the crack):
+ *     the compressive peak is beta f_c, beta = min(1, 1 / (0.8 + 170
+ *     eps_1)) of Vecchio & Collins (1986) with eps_1 the tensile envelope
+ *     strain, which the compression leaves unchanged; without the entry
+ *     the cracked unit peaks at f_c.
  *
  * The peak of a path is located by restarting from the step before the
  * largest |sigma_y| with 50 times smaller steps, three times.
@@ -91,23 +98,30 @@ namespace
     double a0 = 0, a1 = 0, b0 = 0, b1 = 0;
   };
 
-  /** Advance from @p start to e_yy = @p target in @p n equal steps. */
+  /**
+   * Advance from @p start to e_ii = @p target in @p n equal steps, i = @p
+   * axis (1: y, the default; the lateral stresses of the Control are then
+   * those of x and z, else of the two other axes in cyclic order).
+   */
   std::vector<PathPoint>
   advance(const BrickMaterial &law,
           const Control       &control,
           const PathPoint     &start,
           const double         target,
-          const unsigned int   n)
+          const unsigned int   n,
+          const unsigned int   axis = 1)
   {
+    const unsigned int i = axis, j = axis == 1 ? 0 : (axis + 1) % 3,
+                       k = axis == 1 ? 2 : (axis + 2) % 3;
     BrickPoint point;
     point.characteristic_length = 0.01;
     std::vector<PathPoint> path;
     PathPoint              current = start;
-    const double           e0      = start.strain[1][1];
+    const double           e0      = start.strain[i][i];
     for (unsigned int step = 1; step <= n; ++step)
       {
         SymmetricTensor<2, 3> strain = current.strain;
-        strain[1][1]                 = e0 + (target - e0) * step / n;
+        strain[i][i]                 = e0 + (target - e0) * step / n;
         std::vector<double>   updated(current.state.size());
         SymmetricTensor<2, 3> stress;
         SymmetricTensor<4, 3> C;
@@ -115,20 +129,20 @@ namespace
           {
             law.evaluate(strain, current.state, point, updated, stress, C);
             const double r0 =
-              stress[0][0] - control.a0 - control.a1 * stress[1][1];
+              stress[j][j] - control.a0 - control.a1 * stress[i][i];
             const double r1 =
-              stress[2][2] - control.b0 - control.b1 * stress[1][1];
+              stress[k][k] - control.b0 - control.b1 * stress[i][i];
             if (std::hypot(r0, r1) < 1e-9 * law.tensile_strength())
               break;
             if (it == 50)  // past a tensile peak the mixed control can have
               return path; // no solution: the path ends there
-            const double J00 = C[0][0][0][0] - control.a1 * C[1][1][0][0];
-            const double J01 = C[0][0][2][2] - control.a1 * C[1][1][2][2];
-            const double J10 = C[2][2][0][0] - control.b1 * C[1][1][0][0];
-            const double J11 = C[2][2][2][2] - control.b1 * C[1][1][2][2];
+            const double J00 = C[j][j][j][j] - control.a1 * C[i][i][j][j];
+            const double J01 = C[j][j][k][k] - control.a1 * C[i][i][k][k];
+            const double J10 = C[k][k][j][j] - control.b1 * C[i][i][j][j];
+            const double J11 = C[k][k][k][k] - control.b1 * C[i][i][k][k];
             const double det = J00 * J11 - J01 * J10;
-            strain[0][0] -= (J11 * r0 - J01 * r1) / det;
-            strain[2][2] -= (-J10 * r0 + J00 * r1) / det;
+            strain[j][j] -= (J11 * r0 - J01 * r1) / det;
+            strain[k][k] -= (-J10 * r0 + J00 * r1) / det;
           }
         current.strain = strain;
         current.stress = stress;
@@ -138,15 +152,21 @@ namespace
     return path;
   }
 
-  /** The point of largest |sigma_yy| on the path to @p target, refined. */
+  /**
+   * The point of largest |sigma_yy| on the path to @p target, refined;
+   * from @p from if given, else from the unstrained, intact state.
+   */
   PathPoint
   peak(const BrickMaterial &law,
        const Control       &control,
        const double         target,
-       const unsigned int   n = 2000)
+       const unsigned int   n    = 2000,
+       const PathPoint     *from = nullptr)
   {
     PathPoint start;
     start.state.assign(n_state(law), 0.);
+    if (from)
+      start = *from;
     std::vector<PathPoint> path = advance(law, control, start, target, n);
     for (unsigned int refinement = 0;; ++refinement)
       {
@@ -331,6 +351,70 @@ main(int argc, char **argv)
                            0,
                        "pure tension to 10 f_t / E0: cracked (d_t > 0.5), "
                        "compressive damage and envelope strain exactly 0");
+  }
+
+  // (d) a cracked unit in compression: `Cracked compression softening'
+  {
+    const auto cracked = material("damage plasticity",
+                                  "set Tension-compression interaction = true\n"
+                                  "set Cracked compression softening = 170\n");
+    double     worst = 0, worst_kappa = 0;
+    bool       lowered = true;
+    for (const double eps_1 : {0.0008, 0.003, 0.01, 0.03})
+      {
+        // uniaxial tension in x to eps_1 (sigma_y = sigma_z = 0), back to
+        // zero stress (e_xx = its plastic part), then uniaxial compression
+        // in y (sigma_x = sigma_z = 0), parallel to the crack (normal x)
+        PathPoint start;
+        start.state.assign(n_state(*cracked), 0.);
+        auto crack = [&](const BrickMaterial &law) {
+          const auto pulled = advance(law, Control(), start, eps_1, 200, 0);
+          AssertThrow(pulled.size() == 200, ExcMessage("tension leg"));
+          const auto back =
+            advance(law,
+                    Control(),
+                    pulled.back(),
+                    state_value(law, pulled.back().state, "plastic_strain"),
+                    20,
+                    0);
+          AssertThrow(back.size() == 20 &&
+                        std::abs(back.back().stress[0][0]) < 1e-6 * f_t,
+                      ExcMessage("unloading leg"));
+          return back.back();
+        };
+        const PathPoint unloaded = crack(*cracked);
+        const PathPoint top =
+          peak(*cracked, Control(), -4 * eps_c, 2000, &unloaded);
+        const double beta     = std::min(1., 1 / (0.8 + 170 * eps_1));
+        const double expected = beta * f_c;
+        const double kappa_t =
+          state_value(*cracked, top.state, "kappa_tension");
+        log() << "cracked to " << eps_1 << " (d_t "
+              << state_value(*cracked, unloaded.state, "damage_tension")
+              << "): compressive peak " << -top.stress[1][1] << ", beta f_c "
+              << expected << " (" << -top.stress[1][1] / expected - 1
+              << "), kappa_t " << kappa_t << "\n";
+        worst = std::max(worst, std::abs(-top.stress[1][1] / expected - 1));
+        worst_kappa = std::max(worst_kappa, std::abs(kappa_t / eps_1 - 1));
+        // the same path without the entry: the crack does not weaken it
+        const PathPoint plain_unloaded = crack(*unit);
+        const PathPoint plain =
+          peak(*unit, Control(), -4 * eps_c, 2000, &plain_unloaded);
+        lowered = lowered && std::abs(-plain.stress[1][1] / f_c - 1) < 1e-6;
+      }
+    log() << "largest |peak / (beta f_c) - 1| = " << worst
+          << ", |kappa_t / eps_1 - 1| = " << worst_kappa << "\n";
+    vault_tests::check(
+      worst < 1e-6 && worst_kappa < 1e-9,
+      "unit with `Cracked compression softening = 170', "
+      "cracked by uniaxial tension to eps_1 = 0.0008, "
+      "0.003, 0.01, 0.03 (its tensile envelope strain, "
+      "unchanged by the compression), then compressed "
+      "parallel to the crack: peak = f_c / (0.8 + 170 eps_1) <= "
+      "f_c (Vecchio-Collins; 1e-6)");
+    vault_tests::check(lowered,
+                       "without the entry the same cracked unit peaks at "
+                       "f_c (1e-6)");
   }
 
   // (b) the mortar

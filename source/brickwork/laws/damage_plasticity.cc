@@ -384,6 +384,14 @@ namespace masonry
     }
 
     double
+    DamagePlasticityBrick::cracked_compression_factor(const double eps_1) const
+    {
+      if (c_cracked == 0 || eps_1 <= 0)
+        return 1.;
+      return std::min(1., 1 / (0.8 + c_cracked * eps_1));
+    }
+
+    double
     DamagePlasticityBrick::scale_onto(const double tau,
                                       const double a,
                                       const double M,
@@ -468,10 +476,13 @@ namespace masonry
       double d_t = old.kappa_t > 0 ? tension(old.kappa_t, l, phi).damage : 0.;
       double d_c =
         old.kappa_c > 0 ? compression(old.kappa_c, l, phi).damage : 0.;
-      // compression: the envelope strain this trial state corresponds to
+      // compression: the envelope strain this trial state corresponds to;
+      // a cracked point reaches its threshold at beta T (beta of the
+      // tensile envelope strain at the start of the step)
       {
-        const double m   = interaction_share(tau_c, tau_t, d_c, d_t, phi);
-        const double tau = tau_c / (1 - m);
+        const double beta = cracked_compression_factor(old.kappa_t);
+        const double m    = interaction_share(tau_c, tau_t, d_c, d_t, phi);
+        const double tau  = tau_c / ((1 - m) * beta);
         const double p_old =
           old.kappa_c > 0 ? compression(old.kappa_c, l, phi).plastic : 0.;
         const double e = p_old + tau / E;
@@ -484,8 +495,8 @@ namespace masonry
                        scale_onto(tau_c,
                            (1 - env.damage) * tau_c / (phi * f_c),
                            std::min((1 - d_t) * tau_t / (phi * f_t), 0.5),
-                           T) :
-                       T / tau_c;
+                           beta * T) :
+                       beta * T / tau_c;
             if (radial_flow)
               {
                 updated.plastic_strain += (1 - s) * compliance(minus);
@@ -497,7 +508,7 @@ namespace masonry
                    1 - env.damage,
                    d_t,
                    phi,
-                   T,
+                   beta * T,
                    updated,
                    plus,
                    tau_t,
@@ -569,6 +580,9 @@ MASONRY_REGISTER_BRICK_MATERIAL(
   "central differences of the stress update (consistent to O(h^2)); "
   "elastic points use C0. Options: `Tension-compression interaction' "
   "(failure on the linear envelope sigma_t / f_t + sigma_c / f_c = 1 under "
-  "compression with lateral tension), `Confinement coefficient' (Lubliner's "
+  "compression with lateral tension), `Cracked compression softening' "
+  "(a cracked point's compressive strength beta f_c, beta = 1 / (0.8 + c "
+  "eps_1) <= 1 after Vecchio & Collins 1986), `Confinement coefficient' "
+  "(Lubliner's "
   "triaxial term), `Compressive softening' = false (perfectly plastic in "
   "compression).")

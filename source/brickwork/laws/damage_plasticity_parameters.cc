@@ -187,6 +187,26 @@ namespace masonry
         "compression and one where tension dominates cracks, and pure "
         "tension or compression is unchanged; false: independent "
         "criteria, a square envelope).");
+      prm.declare_entry(
+        "Cracked compression softening",
+        defaults.cracked,
+        Double(0),
+        "Coefficient c of the compression softening of cracked material "
+        "(dimensionless, >= 0; 0: none): the compressive strength of a "
+        "point is beta f_c with beta = min(1, 1 / (0.8 + c eps_1)), eps_1 "
+        "the largest equivalent tensile strain it has reached (its tensile "
+        "envelope strain, in uniaxial tension the strain itself; taken at "
+        "the start of each step). c = 170 is the relation of Vecchio & "
+        "Collins (1986, modified compression field theory) for cracked "
+        "concrete, where eps_1 is the mean principal tensile strain across "
+        "several cracks; here it is the strain of the cracked cell (crack "
+        "band: opening / cell size), and applying it to fired-clay units "
+        "is an assumption. The compressive measure is divided by beta, so "
+        "the whole compressive envelope (elastic limit, peak, softening) "
+        "is scaled by beta in stress; a crack that opens further while the "
+        "point is compressed moves it along its envelope (plastic strain "
+        "and compressive damage grow). beta < 1 once eps_1 > 0.2 / c "
+        "(0.00118 for c = 170); 0.61 at 0.005, 0.24 at 0.02.");
     }
 
     void
@@ -219,6 +239,7 @@ namespace masonry
       softening     = prm.get_bool("Compressive softening");
       interaction   = prm.get_bool("Tension-compression interaction");
       k_confinement = prm.get_double("Confinement coefficient");
+      c_cracked     = prm.get_double("Cracked compression softening");
       {
         const std::string flow = prm.get("Plastic Poisson's ratio");
         radial_flow            = flow == "elastic";

@@ -47,6 +47,10 @@
  *   compressive, so that |sigma_1| = f_c + k p under (-sigma_1, -p, -p);
  * - `Compressive softening' = false: the envelope stays at f_c after its
  *   peak (plugin `mortar', which only changes the defaults);
+ * - `Cracked compression softening' c: the compressive measure is also
+ *   divided by beta = min(1, 1 / (0.8 + c kappa_t)), kappa_t the tensile
+ *   envelope strain at the start of the step (Vecchio & Collins 1986,
+ *   c = 170: a cracked point peaks at beta f_c in compression);
  * - `Plastic Poisson's ratio' nu_p: the compressive plastic strain grows
  *   along C_p^-1 : s- (compliance with E0, nu_p) instead of C0^-1 : s-,
  *   with the multiplier from a scalar root search (flow()); a confined
@@ -71,6 +75,8 @@ namespace masonry
     struct DamagePlasticityDefaults
     {
       const char *E, *nu, *f_c, *eps_c, *f_t, *G_f, *softening, *nu_p, *what;
+      /** `Cracked compression softening'. */
+      const char *cracked = "0";
     };
 
 
@@ -115,7 +121,8 @@ namespace masonry
                  "80",
                  "true",
                  "elastic",
-                 "enlarged bricks"});
+                 "enlarged bricks",
+                 "0"});
       }
 
       /** The entries, with the plugin's @p defaults. */
@@ -339,6 +346,15 @@ namespace masonry
       static double
       scale_onto(const double tau, const double a, const double M, double T);
 
+      /**
+       * The factor beta = min(1, 1 / (0.8 + c eps_1)) of `Cracked
+       * compression softening' c on the compressive threshold of a point
+       * whose tensile envelope strain is @p eps_1 (Vecchio & Collins
+       * 1986); 1 if c = 0.
+       */
+      double
+      cracked_compression_factor(const double eps_1) const;
+
       /** The compressive envelope at total strain @p e. */
       EnvelopePoint
       compression(const double e, const double l, const double phi) const;
@@ -372,6 +388,8 @@ namespace masonry
       double G_c = 20000, b_c = 0.7, f_t = 2e6, G_f = 80, b_t = 0;
       double rho = 1.16, d_max = 0.99, mu_visc = 0;
       double alpha = 0, lambda = 0, mu = 0;
+      /** `Cracked compression softening' c (0: off). */
+      double c_cracked = 0;
       /** `Compressive softening', `Tension-compression interaction'. */
       bool softening = true, interaction = false;
       /** `Plastic Poisson's ratio': elastic (radial) or nu_p. */
