@@ -207,6 +207,35 @@ namespace masonry
                           "Backtracking line search on the residual norm "
                           "(halving the Newton correction up to 5 times).");
         prm.declare_entry(
+          "Predictor",
+          "extrapolated",
+          Selection("extrapolated|constant"),
+          "First iterate of a load step: `extrapolated' adds the "
+          "displacement increment of the last converged step, scaled by the "
+          "ratio of the platen increments, to the last converged solution "
+          "(only within a leg: after a reversal of the platen, a cut-back "
+          "or a deletion the increment of the last step is not used); "
+          "`constant' starts from the last converged solution with only the "
+          "platen moved. The converged state is the same to the `Newton "
+          "tolerance'; the extrapolated start saves about one Newton "
+          "iteration per step.");
+        prm.declare_entry(
+          "Residual reference",
+          "present reaction",
+          Selection("largest reaction|present reaction"),
+          "What `Newton tolerance' is relative to: `present reaction', the "
+          "norm of the platen reactions of the iterate; `largest "
+          "reaction', the larger of that and the largest such norm of the "
+          "converged steps so far (the peak force). After the wall has "
+          "collapsed the present reactions are near zero, and a tolerance "
+          "relative to them asks for residuals of hundredths of a newton "
+          "that round-off prevents; relative to the peak force the "
+          "tolerance is that of the peak (but a state accepted to it can be "
+          "off the exact one by about the tolerance times the peak force, "
+          "where `present reaction' is exact to round-off on an elastic "
+          "reload). Before the peak of a monotonic run the two are "
+          "equal.");
+        prm.declare_entry(
           "Assembly threads",
           "1",
           Integer(0),
@@ -236,6 +265,19 @@ namespace masonry
           "run (damage does not heal); summary.json: "
           "direct_solver_fallbacks. Below some 10^5 DOFs `direct' is "
           "usually the fastest for damaged wallettes.");
+        prm.declare_entry(
+          "Factorisation reuse iterations",
+          "0",
+          Integer(0, 1000),
+          "`Linear solver = direct' only: a Newton correction is first "
+          "solved by GMRES with the last LU factorisation (of an earlier "
+          "tangent) as the preconditioner, to `Linear solver tolerance'; "
+          "when GMRES needs more than this many iterations the tangent is "
+          "factorised anew and solved directly (dimensionless count; 0: "
+          "every solve factorises). Saves factorisations while the tangent "
+          "changes little (elastic legs, IMPL-EX steps); the Newton "
+          "iterates differ from those of the direct solve by the linear "
+          "tolerance, the converged states by the `Newton tolerance'.");
         prm.declare_entry("Linear solver tolerance",
                           "1e-10",
                           Double(0),
@@ -559,8 +601,14 @@ namespace masonry
         s.protocol.max_cutbacks = prm.get_integer("Maximum cut-backs");
         s.protocol.growth       = prm.get_double("Step growth factor");
         s.newton.max_newton     = prm.get_integer("Maximum Newton iterations");
-        s.newton.newton_tolerance        = positive("Newton tolerance");
-        s.newton.line_search             = prm.get_bool("Line search");
+        s.newton.newton_tolerance = positive("Newton tolerance");
+        s.newton.line_search      = prm.get_bool("Line search");
+        s.newton.extrapolated_predictor =
+          prm.get("Predictor") == "extrapolated";
+        s.newton.largest_reaction_reference =
+          prm.get("Residual reference") == "largest reaction";
+        s.linear_solver.reuse_iterations =
+          prm.get_integer("Factorisation reuse iterations");
         s.linear_solver.linear_solver    = prm.get("Linear solver");
         s.linear_solver.linear_tolerance = positive("Linear solver tolerance");
         s.mesh.gauss            = prm.get("Interface integration") == "gauss";

@@ -449,20 +449,29 @@ namespace masonry
             const double taken     = std::abs(next - applied);
             const double time_step = taken / settings.protocol.platen_speed;
             // IMPL-EX: no extrapolation across a reversal of the platen
-            integrator->set_ratio(progress.last_increment > 0 &&
-                                      curve.size() > 1 &&
-                                      curve.back().unloading == leg.unloading &&
-                                      curve.back().cycle == leg.cycle ?
-                                    taken / progress.last_increment :
-                                    0.);
-            unsigned int its = 0;
+            const double ratio = progress.last_increment > 0 &&
+                                     curve.size() > 1 &&
+                                     curve.back().unloading == leg.unloading &&
+                                     curve.back().cycle == leg.cycle ?
+                                   taken / progress.last_increment :
+                                   0.;
+            integrator->set_ratio(ratio);
+            // the predictor: the last step's displacement increment scaled
+            // to this one (zero after a reversal or a deletion); the
+            // platen DOFs are set by the Newton step
+            if (settings.newton.extrapolated_predictor && ratio > 0)
+              system.u.add(ratio, system.last_increment);
+            unsigned int its      = 0;
+            double       reaction = 0;
             std::string  failure;
             const bool   ok = newton.solve_step(system,
                                               *assembler,
                                               *solver,
                                               next,
                                               time_step,
+                                              progress.largest_reaction,
                                               its,
+                                              reaction,
                                               non_finite,
                                               failure);
             statistics.total_newton += its;
@@ -553,7 +562,11 @@ namespace masonry
               }
             accept_step();
             progress.last_increment = taken;
-            u_converged             = system.u;
+            progress.largest_reaction =
+              std::max(progress.largest_reaction, reaction);
+            system.last_increment = system.u;
+            system.last_increment -= u_converged;
+            u_converged = system.u;
             progress.time += time_step;
             progress.applied = next;
             ++progress.step;
@@ -561,6 +574,10 @@ namespace masonry
             unsigned int       faded = 0;
             const unsigned int removed =
               delete_cells(settings.specimen, joints, system, specimen, faded);
+            // the deleted cells' DOFs are fixed from now on: no
+            // extrapolation across the change of the structure
+            if (removed > 0)
+              system.last_increment = 0;
             if (removed > 0 || faded > 0)
               {
                 assembler->invalidate();
@@ -675,6 +692,9 @@ namespace masonry
         summary["linear_solves"]           = s.n_solves;
         summary["matrix_assemblies"]       = a.n_matrix_assemblies;
         summary["factorisations_reused"]   = s.n_factorisations_reused;
+        summary["factorisations"]          = s.n_factorisations;
+        summary["reuse_gmres_solves"]      = s.n_reuse_solves;
+        summary["reuse_gmres_iterations"]  = s.n_reuse_iterations;
         summary["deleted_cells"]           = specimen.n_deleted;
         summary["direct_solver_fallbacks"] = s.n_direct_fallbacks;
         step_control->write_summary(summary);

@@ -139,6 +139,7 @@ namespace masonry
         // one iteration cannot converge a non-linear step: the steps are cut
         // back to nothing (1e-10 m) instead
         {"Wallette/Maximum Newton iterations", 2, 1000, "iterations"},
+        {"Wallette/Factorisation reuse iterations", 0, 1000, "iterations"},
         {"Wallette/Unloading stress", 0, 1e9, "Pa"},
         {"Wallette/Platen direction", -1e3, 1e3, "(dimensionless)", 3, ","},
         {"Wallette/Cycle amplitudes", 0, 1, "(dimensionless)", 1, ",", true},

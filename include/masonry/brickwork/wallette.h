@@ -127,6 +127,16 @@ namespace masonry
       unsigned int max_newton       = 20;
       double       newton_tolerance = 1e-8;
       bool         line_search      = true;
+      /** First iterate of a step: the last converged solution plus the
+       * last step's displacement increment scaled to this step
+       * (`Predictor' = extrapolated), or the last converged solution with
+       * only the platen moved (constant). */
+      bool extrapolated_predictor = true;
+      /** The residual is measured against the largest of the platen
+       * reactions of the iterate and of every converged step so far
+       * (`Residual reference' = largest reaction), not against the
+       * present reactions only (present reaction). */
+      bool largest_reaction_reference = false;
     };
 
     /** The linear solver (`Linear solver', `Linear solver tolerance'). */
@@ -136,6 +146,10 @@ namespace masonry
       std::string linear_solver = "direct";
       /** Relative tolerance of the iterative solvers. */
       double linear_tolerance = 1e-10;
+      /** `direct': GMRES iterations with the last LU factorisation as
+       * the preconditioner before the matrix is factorised anew (0: every
+       * solve factorises; `Factorisation reuse iterations'). */
+      unsigned int reuse_iterations = 0;
     };
 
     /** Integration of the laws (`Damage integration', `IMPL-EX ...'). */

@@ -61,10 +61,14 @@ namespace masonry
           ar &n_ranks            &n_dofs;
           serialize_parts(ar, parts);
           std::vector<std::pair<types::global_dof_index, double>> values;
+          std::vector<double>                                     increments;
           for (const auto i : parts.system.owned)
-            values.emplace_back(i, parts.system.u[i]);
-          std::string s = status;
-          ar &values &s;
+            {
+              values.emplace_back(i, parts.system.u[i]);
+              increments.push_back(parts.system.last_increment[i]);
+            }
+          std::string             s = status;
+          ar &values &increments &s;
         }
         // replace the old checkpoint only once the new one is complete
         std::filesystem::rename(name + ".tmp", name);
@@ -102,11 +106,20 @@ namespace masonry
                                        "parameters and number of ranks"));
             serialize_parts(ar, parts);
             std::vector<std::pair<types::global_dof_index, double>> values;
+            std::vector<double>                                     increments;
             std::string                                             status;
-            ar &values                                             &status;
-            for (const auto &v : values)
-              parts.system.u[v.first] = v.second;
+            ar &values &increments                                 &status;
+            AssertThrow(increments.size() == values.size(),
+                        ExcParameter("Resume",
+                                     "the checkpoint " + name +
+                                       " is damaged (sizes differ)"));
+            for (unsigned int k = 0; k < values.size(); ++k)
+              {
+                parts.system.u[values[k].first]              = values[k].second;
+                parts.system.last_increment[values[k].first] = increments[k];
+              }
             parts.system.u.compress(VectorOperation::insert);
+            parts.system.last_increment.compress(VectorOperation::insert);
           }
         catch (const boost::archive::archive_exception &e)
           {

@@ -4,6 +4,7 @@
  */
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
 
@@ -105,6 +106,17 @@ namespace masonry
             : name(name)
           {}
 
+          /** GMRES with the last factorisation first, up to @p iterations
+           * (0: never), to the relative @p linear_tolerance (`Factorisation
+           * reuse iterations'). */
+          void
+          enable_reuse(const unsigned int iterations,
+                       const double       linear_tolerance)
+          {
+            reuse_iterations = iterations;
+            tolerance        = linear_tolerance;
+          }
+
           /** Factorise the current matrix and solve. */
           void
           factorise_and_solve(System               &system,
@@ -134,6 +146,13 @@ namespace masonry
             const bool fresh = !direct;
             if (fresh)
               make(system);
+            if (!fresh && !reuse && reuse_iterations > 0 && factorised &&
+                solve_with_old_factors(system, du, rhs))
+              {
+                // the kept factorisation is no longer that of this matrix
+                is_initial = false;
+                return;
+              }
             solve_with(du, rhs, fresh || !reuse, initial_tangent);
           }
 
@@ -144,6 +163,64 @@ namespace masonry
           }
 
         private:
+          /** The last factorisation as a preconditioner. */
+          struct OldFactors
+          {
+            Direct *direct;
+            void
+            vmult(System::Vector &dst, const System::Vector &src) const
+            {
+              direct->apply_factors(dst, src);
+            }
+          };
+
+          /** dst = the kept factors' inverse times src. */
+          void
+          apply_factors(System::Vector &dst, const System::Vector &src)
+          {
+            int result = 0;
+            problem.SetLHS(&dst.trilinos_vector());
+            problem.SetRHS(
+              const_cast<Epetra_MultiVector *>(&src.trilinos_vector()));
+            quietly([&]() { return direct->Solve(); }, result);
+            if (result != 0 || failed())
+              fail("failed in the solve with the factorised tangent");
+          }
+
+          /**
+           * GMRES (right-preconditioned: the true residual) on the current
+           * matrix with the last factorisation as the preconditioner, to
+           * the relative `tolerance'; false (du zeroed) when it needs more
+           * than `reuse_iterations' or fails.
+           */
+          bool
+          solve_with_old_factors(System               &system,
+                                 System::Vector       &du,
+                                 const System::Vector &rhs)
+          {
+            SolverControl control(reuse_iterations,
+                                  tolerance * rhs.l2_norm(),
+                                  false,
+                                  false);
+            try
+              {
+                SolverGMRES<System::Vector> gmres(
+                  control,
+                  SolverGMRES<System::Vector>::AdditionalData(reuse_iterations +
+                                                                2,
+                                                              true));
+                gmres.solve(system.matrix, du, rhs, OldFactors{this});
+              }
+            catch (const std::exception &)
+              {
+                du = 0;
+                return false;
+              }
+            ++statistics.n_reuse_solves;
+            statistics.n_reuse_iterations += control.last_step();
+            return true;
+          }
+
           void
           make(System &system)
           {
@@ -171,10 +248,13 @@ namespace masonry
               {
                 // (a failed factorisation is no longer the kept one)
                 is_initial = false;
+                factorised = false;
                 quietly([&]() { return direct->NumericFactorization(); },
                         result);
                 if (result != 0 || failed())
                   fail("could not factorise the tangent");
+                ++statistics.n_factorisations;
+                factorised = true;
                 is_initial = initial_tangent;
               }
             problem.SetLHS(&du.trilinos_vector());
@@ -212,9 +292,13 @@ namespace masonry
           }
 
           std::string                        name;
+          unsigned int                       reuse_iterations = 0;
+          double                             tolerance        = 1e-10;
           Epetra_LinearProblem               problem;
           std::unique_ptr<Amesos_BaseSolver> direct;
           bool                               is_initial = false;
+          /** A numeric factorisation (of some earlier tangent) exists. */
+          bool factorised = false;
         };
 
         /**
@@ -363,7 +447,12 @@ namespace masonry
       {
         const std::string &s = settings.linear_solver;
         if (s == "direct")
-          return std::make_unique<Direct>("Amesos_Mumps");
+          {
+            auto direct = std::make_unique<Direct>("Amesos_Mumps");
+            direct->enable_reuse(settings.reuse_iterations,
+                                 settings.linear_tolerance);
+            return direct;
+          }
         if (s == "direct klu")
           return std::make_unique<Direct>("Amesos_Klu");
         AssertThrow(s == "cg amg" || s == "gmres amg",

@@ -27,6 +27,11 @@ namespace masonry
       struct SolverStatistics
       {
         unsigned int n_solves = 0, n_factorisations_reused = 0;
+        /** Solves done by GMRES with an earlier factorisation
+         * (`Factorisation reuse iterations'), and their iterations. */
+        unsigned int n_reuse_solves = 0, n_reuse_iterations = 0;
+        /** Numeric factorisations. */
+        unsigned int n_factorisations = 0;
         /** Krylov solves that did not converge and were done by MUMPS. */
         unsigned int n_direct_fallbacks = 0;
         /** Wall time in solves, s. */

@@ -44,14 +44,20 @@ namespace masonry
       {}
 
       bool
-      Newton::converged(const double norm, const double all) const
+      Newton::converged(const double norm,
+                        const double all,
+                        const double reference,
+                        double      &reaction) const
       {
         // the residual (constrained entries zeroed) against the platen
         // reactions, or against the elastic force of the whole applied
-        // displacement when nothing is loaded
+        // displacement when nothing is loaded; with the largest-reaction
+        // reference, against the largest reactions of the run so far
+        reaction = std::sqrt(std::max(all * all - norm * norm, 0.));
         const double scale =
-          std::max(std::sqrt(std::max(all * all - norm * norm, 0.)),
-                   minimum_force);
+          std::max({reaction,
+                    minimum_force,
+                    settings.largest_reaction_reference ? reference : 0.});
         return norm <= settings.newton_tolerance * scale;
       }
 
@@ -61,7 +67,9 @@ namespace masonry
                          LinearSolver &solver,
                          const double  displacement,
                          const double  time_step,
+                         const double  reference,
                          unsigned int &iterations,
+                         double       &reaction,
                          std::string  &non_finite,
                          std::string  &failure) const
       {
@@ -96,7 +104,7 @@ namespace masonry
                          (part.empty() ? "the internal forces" : part));
                     return false;
                   }
-                if (converged(norm, all))
+                if (converged(norm, all, reference, reaction))
                   return true;
                 if (iterations == settings.max_newton)
                   {
@@ -130,9 +138,14 @@ namespace masonry
                 system.zero_constraints.set_zero(du);
                 u_start = system.u;
                 system.u.add(1., du);
-                if (settings.line_search &&
-                    line_search(
-                      system, assembler, u_start, du, norm, time_step))
+                if (settings.line_search && line_search(system,
+                                                        assembler,
+                                                        u_start,
+                                                        du,
+                                                        norm,
+                                                        time_step,
+                                                        reference,
+                                                        reaction))
                   {
                     ++iterations;
                     return true;
@@ -153,7 +166,9 @@ namespace masonry
                           const System::Vector &u_start,
                           const System::Vector &du,
                           const double          norm0,
-                          const double          time_step) const
+                          const double          time_step,
+                          const double          reference,
+                          double               &reaction) const
       {
         // backtracking on the residual norm
         System::Vector r(system.owned, system.comm);
@@ -168,7 +183,7 @@ namespace masonry
             // updated at it, so the tangent assembly of the next iteration
             // would only repeat this residual
             if (std::isfinite(n) && n < (1 - 1e-4 * alpha) * norm0 &&
-                converged(n, system.f_int.l2_norm()))
+                converged(n, system.f_int.l2_norm(), reference, reaction))
               return true;
             if (k == 0 || (std::isfinite(n) && n < best))
               {

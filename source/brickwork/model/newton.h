@@ -41,6 +41,12 @@ namespace masonry
          * in a few words ("MUMPS could not factorise the tangent: INFOG(1)
          * = -10, ... (Newton iteration 3)", "the residual ... after 50
          * Newton iterations").
+         *
+         * @p reference: the largest norm of the platen reactions of the
+         * converged steps so far (N); with `Residual reference = largest
+         * reaction' the residual is measured against it when the present
+         * reactions are smaller. @p reaction: the norm of the platen
+         * reactions of the converged state (N).
          */
         bool
         solve_step(System       &system,
@@ -48,15 +54,21 @@ namespace masonry
                    LinearSolver &solver,
                    const double  displacement,
                    const double  time_step,
+                   const double  reference,
                    unsigned int &iterations,
+                   double       &reaction,
                    std::string  &non_finite,
                    std::string  &failure) const;
 
       private:
         /** Whether the residual @p norm is small against the reactions
-         * (@p all: the norm of the internal forces with them). */
+         * (@p all: the norm of the internal forces with them) or the
+         * @p reference force; @p reaction: the norm of the reactions. */
         bool
-        converged(const double norm, const double all) const;
+        converged(const double norm,
+                  const double all,
+                  const double reference,
+                  double      &reaction) const;
 
         /** The line search after the correction @p du from @p u_start;
          * true when it lands on a converged state. */
@@ -66,7 +78,9 @@ namespace masonry
                     const System::Vector &u_start,
                     const System::Vector &du,
                     const double          norm0,
-                    const double          time_step) const;
+                    const double          time_step,
+                    const double          reference,
+                    double               &reaction) const;
 
         NewtonSettings settings;
         double         minimum_force;

@@ -54,12 +54,15 @@ namespace masonry
         unsigned int step = 0, easy_steps = 0, segment = 0;
         /** Platen displacement increment of the last converged step. */
         double last_increment = 0;
+        /** Largest norm of the platen reactions of the converged steps so
+         * far (N): the reference of the Newton residual. */
+        double largest_reaction = 0;
         template <class Archive>
         void
         serialize(Archive &ar, const unsigned int)
         {
           ar &applied &increment &time &step &easy_steps &segment
-            &last_increment;
+            &last_increment &largest_reaction;
         }
       };
 

@@ -140,6 +140,7 @@ namespace masonry
         matrix.reinit(owned, owned, dsp, comm);
 
         u.reinit(owned, comm);
+        last_increment.reinit(owned, comm);
         f_int.reinit(owned, comm);
         ghosted.reinit(owned, relevant, comm);
       }

@@ -88,6 +88,9 @@ namespace masonry
         dealii::TrilinosWrappers::SparseMatrix            matrix;
         /** Owned vectors; `ghosted` holds every entry on every rank. */
         Vector u, f_int, ghosted;
+        /** Displacement increment of the last converged step (the
+         * extrapolated predictor; zero after a reversal or a deletion). */
+        Vector last_increment;
         /** DOFs held by the platens; DOFs in no remaining cell. */
         std::vector<dealii::types::global_dof_index> platen_lines, orphans;
         /** Top platen DOFs with their components: (dof, component). */
