@@ -7,6 +7,8 @@
  * blocks per half): the settlement of one springing with no tension no sliding
  * and with Mohr–Coulomb joints (maximised work), and the limit load under a
  * horizontal acceleration with Mohr–Coulomb joints (minimised multiplier).
+ * The joints have a tension cut-off and a compression cap, which the
+ * automatic route turns into bounds of the normal forces of the dual.
  * "Worse" is measured relative to the explicit algorithm's optimum with a
  * tolerance of 1e-8; every explicit algorithm must reach the same status.
  */
@@ -21,7 +23,8 @@ namespace
   const std::string mohr_coulomb =
     "subsection Interface model\n  set Model = mohr coulomb\n"
     "  subsection Mohr coulomb\n    set Friction coefficient = 0.6\n"
-    "    set Cohesion = 1e4\n    set Tensile strength = 5e3\n  end\nend\n";
+    "    set Cohesion = 1e4\n    set Tensile strength = 5e3\n"
+    "    set Compressive strength = 3e5\n  end\nend\n";
 
   std::string
   limit_load_prm()

@@ -286,9 +286,8 @@ namespace masonry
           for (unsigned int p = 0; p < i.points.size(); ++p)
             {
               const auto                               &c     = i.points[p];
-              const std::array<dealii::Tensor<1, 3>, 3> frame = {c.normal,
-                                                                 c.across,
-                                                                 c.along};
+              const std::array<dealii::Tensor<1, 3>, 3> frame = {
+                {c.normal, c.across, c.along}};
               // jump = v_second − v_first, or u0 − v_first at a support:
               // rows hold the velocity part, bounds the ground motion
               dealii::Tensor<1, 3> ground;
