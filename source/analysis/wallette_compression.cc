@@ -208,7 +208,7 @@ namespace masonry
                           "(halving the Newton correction up to 5 times).");
         prm.declare_entry(
           "Predictor",
-          "extrapolated",
+          "constant",
           Selection("extrapolated|constant"),
           "First iterate of a load step: `extrapolated' adds the "
           "displacement increment of the last converged step, scaled by the "
@@ -217,8 +217,13 @@ namespace masonry
           "or a deletion the increment of the last step is not used); "
           "`constant' starts from the last converged solution with only the "
           "platen moved. The converged state is the same to the `Newton "
-          "tolerance'; the extrapolated start saves about one Newton "
-          "iteration per step.");
+          "tolerance'; the extrapolated start saves about a third of the "
+          "Newton iterations, but its converged states are only as close "
+          "as the tolerance, where Newton from the constant start usually "
+          "lands far below it, and past the peak of the cyclic examples "
+          "that moved the collapse of the wall by a cycle "
+          "(contrib/benchmarks/wallette_cyclic/results-2026-11-24c.md): "
+          "`constant' is the default.");
         prm.declare_entry(
           "Residual reference",
           "present reaction",

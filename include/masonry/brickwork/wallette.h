@@ -131,7 +131,7 @@ namespace masonry
        * last step's displacement increment scaled to this step
        * (`Predictor' = extrapolated), or the last converged solution with
        * only the platen moved (constant). */
-      bool extrapolated_predictor = true;
+      bool extrapolated_predictor = false;
       /** The residual is measured against the largest of the platen
        * reactions of the iterate and of every converged step so far
        * (`Residual reference' = largest reaction), not against the
