@@ -113,7 +113,7 @@ KEYS = ["thickness", "mesh", "ranks", "strain", "n_cells", "n_dofs",
         "steps", "cpu_seconds", "first_peak", "first_peak_strain",
         "peak_stress", "strain_at_peak",
         "initial_modulus", "last_stress", "past_peak", "change_to_finer",
-        "status", "exit_code"]
+        "largest_change_to_finer", "status", "exit_code"]
 
 
 def add_changes(rows, meshes):
@@ -126,9 +126,13 @@ def add_changes(rows, meshes):
         for r in rows:
             if r["thickness"] == t:
                 r.pop("change_to_finer", None)
+                r.pop("largest_change_to_finer", None)
         for a, b in zip(mesh_rows, mesh_rows[1:]):
             a["change_to_finer"] = (a["first_peak"] - b["first_peak"]) / \
                 b["first_peak"]
+            if "peak_stress" in a and "peak_stress" in b:
+                a["largest_change_to_finer"] = \
+                    (a["peak_stress"] - b["peak_stress"]) / b["peak_stress"]
 
 
 def report(directory, rows):
@@ -136,14 +140,17 @@ def report(directory, rows):
     lines = [
         "| thickness | mesh | cells | DOFs | steps | CPU s | first peak MPa "
         "| at strain | past it | change to next finer | largest stress MPa | "
-        "at strain | E₀ GPa | status |",
-        "|---|---|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---|"]
+        "at strain | change to next finer | E₀ GPa | status |",
+        "|---|---|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|"
+        "---|"]
 
     def f(r, key, fmt, scale=1):
         return fmt.format(r[key] * scale) if key in r else ""
     for r in rows:
         change = f"{100 * r['change_to_finer']:+.2f} %" \
             if "change_to_finer" in r else ""
+        largest = f"{100 * r['largest_change_to_finer']:+.2f} %" \
+            if "largest_change_to_finer" in r else ""
         lines.append(
             f"| {r['thickness']} | {r['mesh']} | {f(r, 'n_cells', '{}')} | "
             f"{f(r, 'n_dofs', '{}')} | {f(r, 'steps', '{}')} | "
@@ -152,7 +159,7 @@ def report(directory, rows):
             f"{f(r, 'first_peak_strain', '{:.5f}')} | "
             f"{'yes' if r.get('past_peak') else 'no'} | {change} | "
             f"{f(r, 'peak_stress', '{:.3f}', 1e-6)} | "
-            f"{f(r, 'strain_at_peak', '{:.5f}')} | "
+            f"{f(r, 'strain_at_peak', '{:.5f}')} | {largest} | "
             f"{f(r, 'initial_modulus', '{:.2f}', 1e-9)} | "
             f"{r['status']} |")
     verdict = []
@@ -172,7 +179,15 @@ def report(directory, rows):
             f"{r['first_peak'] / 1e6:.3f} MPa, "
             f"{100 * r['change_to_finer']:+.2f} % to the next finer mesh: "
             f"target {100 * TARGET_CHANGE:.0f} % "
-            f"{'met' if ok else 'NOT met'}.")
+            f"{'met' if ok else 'NOT met'}"
+            + ("" if r["past_peak"] else
+               " (the curve did not fall below "
+               f"{DROP:g} of its largest stress: no first peak)")
+            + (f"; largest stress to the target strain "
+               f"{r['peak_stress'] / 1e6:.3f} MPa, "
+               f"{100 * r['largest_change_to_finer']:+.2f} % to the next "
+               "finer mesh" if "largest_change_to_finer" in r else "")
+            + ".")
     text = "\n".join(lines) + "\n\n" + "\n".join(verdict) + "\n"
     with open(os.path.join(directory, "results.md"), "w") as fmd:
         fmd.write(text)

@@ -20,8 +20,10 @@ namespace masonry
     struct BrickPoint
     {
       /**
-       * Characteristic length of the element (m): the cube root of its
-       * volume; softening is regularised with fracture energy / this.
+       * Characteristic length of the element (m), its crack band: the
+       * cube root of its volume; for a mortar cell of the detailed model
+       * its size across the layer (doc/brickwork.md, `Crack band');
+       * softening is regularised with fracture energy / this.
        */
       double characteristic_length = 1;
       /**

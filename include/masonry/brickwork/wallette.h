@@ -180,9 +180,9 @@ namespace masonry
       double deletion_strain = 0;
       /** Past deletion_strain a cell fades out: its stress and stiffness
        * are scaled by 1 - (e1 - deletion_strain) l / deletion_fade_opening
-       * (l: cube root of its volume, e1: the largest cell-averaged
-       * principal strain so far), and it is deleted when the factor
-       * reaches 0, m (0: deleted at once). */
+       * (l: its crack-band length, BrickPoint::characteristic_length, e1: the
+       * largest cell-averaged principal strain so far), and it is deleted when
+       * the factor reaches 0, m (0: deleted at once). */
       double deletion_fade_opening = 0;
       /** Past deletion_strain a cell also fades with its shortening since
        * then: the factor is at most 1 - (s - s_split) l /

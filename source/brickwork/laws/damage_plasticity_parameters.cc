@@ -87,7 +87,8 @@ namespace masonry
         "Crushing energy G_c, J/m^2 (> 0): after the peak sigma = f_c "
         "exp(-(e - eps_c) / w_c) with w_c = G_c / (f_c l), so that the "
         "area under the softening branch times the element's "
-        "characteristic length l (cube root of its volume) is G_c.");
+        "characteristic length l (the cube root of its volume; a mortar "
+        "cell of the detailed model: its size across the layer) is G_c.");
       prm.declare_entry(
         "Plastic strain ratio",
         "0.7",

@@ -63,10 +63,48 @@ namespace masonry
             faces[i].type == splitting_type ?
               brick_factor[faces[i].brick_a] :
               joint_factor[{faces[i].brick_a, faces[i].brick_b}];
+        // the crack band (doc/brickwork.md, `Crack band'): a unit cell's
+        // cube root of its volume; a mortar cell's size across its layer
+        // (the detailed mesh is a tensor grid of boxes, its mortar layers
+        // one cell thick or a few): a cell of a bed joint, i.e. whose
+        // heights no unit cell shares (also where head and collar joints
+        // cross the bed joint), its height; a cell of a head or collar
+        // joint, the smaller of its horizontal sides
+        std::vector<std::pair<double, double>> unit_heights;
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (s.cell_region[cell->active_cell_index()] == 0)
+            {
+              const auto box = cell->bounding_box();
+              unit_heights.emplace_back(box.lower_bound(2), box.upper_bound(2));
+            }
+        std::sort(unit_heights.begin(), unit_heights.end());
+        unit_heights.erase(std::unique(unit_heights.begin(),
+                                       unit_heights.end(),
+                                       [](const auto &a, const auto &b) {
+                                         return std::abs(a.first - b.first) +
+                                                  std::abs(a.second -
+                                                           b.second) <
+                                                1e-12;
+                                       }),
+                           unit_heights.end());
         for (const auto &cell : triangulation.active_cell_iterators())
           {
-            s.cell_length[cell->active_cell_index()] =
-              std::cbrt(cell->measure());
+            double l = std::cbrt(cell->measure());
+            if (s.cell_region[cell->active_cell_index()] == 1)
+              {
+                const auto   box = cell->bounding_box();
+                const double z0 = box.lower_bound(2), z1 = box.upper_bound(2);
+                const double tol = 1e-6 * (z1 - z0);
+                const bool   bed = std::none_of(unit_heights.begin(),
+                                              unit_heights.end(),
+                                              [&](const auto &h) {
+                                                return h.first < z1 - tol &&
+                                                       h.second > z0 + tol;
+                                              });
+                l                = bed ? z1 - z0 :
+                                         std::min(box.side_length(0), box.side_length(1));
+              }
+            s.cell_length[cell->active_cell_index()] = l;
             s.cell_factor[cell->active_cell_index()] =
               brick_factor[cell->material_id()];
           }

@@ -22,8 +22,10 @@ namespace masonry
       /** Per cell and per joint face data of a specimen. */
       struct Specimen
       {
-        /** Per active cell: cube root of the volume (m), strength factor,
-         * deleted. */
+        /** Per active cell: crack-band length (m; a unit cell's cube root
+         * of its volume, a mortar cell's size across its layer: its height
+         * in a bed joint, the smaller horizontal side in a head or collar
+         * joint), strength factor. */
         std::vector<double> cell_length, cell_factor;
         std::vector<char>   deleted;
         /** Per active cell: the factor on its stress and stiffness while
