@@ -32,25 +32,7 @@ namespace
   std::string
   wallette(const std::string &options)
   {
-    return prm(
-      "set Courses = 7\nset Length in bricks = 2\n"
-      "set Elements along the length = 2\nset Elements along the width = 1\n"
-      "set Elements along the height = 1\n"
-      "set Platen lateral restraint = fixed\nset Protocol = cyclic\n"
-      "set Cycle amplitudes = 0.002, 0.004, 0.006, 0.008\n"
-      "set Unloading stress = 0.1e6\nset Target strain = 0.008\n"
-      "set Number of steps = 40\nset Deletion strain = 0.005\n"
-      "set Strength scatter = 0.1\nset Random seed = 2\n"
-      "set Damage integration = implex\nset Linear solver = direct\n" +
-        options,
-      "subsection Bond\nset Pattern = stretcher\nend\n"
-      "subsection Brick material\nset Model = damage plasticity\n"
-      "subsection Damage plasticity\nset Plastic strain ratio = 0.7\n"
-      "set Tensile plastic strain ratio = 0.1\nset Maximum damage = 0.95\n"
-      "end\nend\n"
-      "subsection Interface law\nset Law = bilinear\n"
-      "set Normal stiffness = 2.5e11\nset Shear stiffness = 1.03e11\n"
-      "end\n");
+    return cracked_cyclic_wallette("set Linear solver = direct\n" + options);
   }
 
   /** The peak stresses of the cycles (cycles.csv) of run @p name. */

@@ -38,6 +38,38 @@ namespace brickwork_tests
   }
 
   /**
+   * The coarse cracked wallette of the solver tests (brickwork_solver_fallback,
+   * brickwork_solver_speed): 7 courses of 2 stretchers, 2 x 1 x 1 cells per
+   * brick between laterally fixed platens, damage-plasticity bricks,
+   * bilinear joints, 10 % strength scatter, deletion at 0.005, IMPL-EX,
+   * cycled to 0.002, 0.004, 0.006, 0.008 in 40 steps. @p extra: further
+   * Wallette entries (the linear solver and solver options).
+   */
+  inline std::string
+  cracked_cyclic_wallette(const std::string &extra)
+  {
+    return prm(
+      "set Courses = 7\nset Length in bricks = 2\n"
+      "set Elements along the length = 2\nset Elements along the width = 1\n"
+      "set Elements along the height = 1\n"
+      "set Platen lateral restraint = fixed\nset Protocol = cyclic\n"
+      "set Cycle amplitudes = 0.002, 0.004, 0.006, 0.008\n"
+      "set Unloading stress = 0.1e6\nset Target strain = 0.008\n"
+      "set Number of steps = 40\nset Deletion strain = 0.005\n"
+      "set Strength scatter = 0.1\nset Random seed = 2\n"
+      "set Damage integration = implex\n" +
+        extra,
+      "subsection Bond\nset Pattern = stretcher\nend\n"
+      "subsection Brick material\nset Model = damage plasticity\n"
+      "subsection Damage plasticity\nset Plastic strain ratio = 0.7\n"
+      "set Tensile plastic strain ratio = 0.1\nset Maximum damage = 0.95\n"
+      "end\nend\n"
+      "subsection Interface law\nset Law = bilinear\n"
+      "set Normal stiffness = 2.5e11\nset Shear stiffness = 1.03e11\n"
+      "end\n");
+  }
+
+  /**
    * The splitting tests' unit: one elastic unit 2 m long, 2 mm thick and
    * 0.1 m high (E = 10 GPa, Poisson's ratio @p nu) on a 40 x 1 x 8 mesh
    * between laterally fixed platens, stack bond, with splitting interfaces
