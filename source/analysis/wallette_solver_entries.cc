@@ -1,0 +1,162 @@
+/**
+ * @file
+ * The wallette analysis's solver entries: see wallette_solver_entries.h.
+ */
+#include <masonry/brickwork/wallette.h>
+#include <masonry/core/parameters.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+#include "wallette_solver_entries.h"
+
+namespace masonry
+{
+  namespace analysis
+  {
+    void
+    declare_solver_entries(dealii::ParameterHandler &prm)
+    {
+      using namespace dealii::Patterns;
+      prm.declare_entry("Maximum cut-backs",
+                        "10",
+                        Integer(0, 60),
+                        "Halvings of a step that does not converge: the "
+                        "run stops with status `not converged' (results up "
+                        "to the last converged step are written) when a "
+                        "step fails after this many consecutive halvings or "
+                        "when it is already smaller than the nominal step "
+                        "/ 2^N (tiny converged steps between failures "
+                        "would otherwise halve it without end).");
+      prm.declare_entry("Step growth factor",
+                        "2",
+                        Double(1),
+                        "Factor on the step after an easy step "
+                        "(dimensionless, >= 1).");
+      prm.declare_entry("Maximum Newton iterations",
+                        "20",
+                        Integer(1, 1000),
+                        "Newton-Raphson iterations of a step before it is "
+                        "cut back.");
+      prm.declare_entry("Newton tolerance",
+                        "1e-8",
+                        Double(0),
+                        "Convergence when the out-of-balance force (l2 "
+                        "norm over the free DOFs, N) is below this times "
+                        "the norm of the platen reactions "
+                        "(dimensionless).");
+      prm.declare_entry("Line search",
+                        "true",
+                        Bool(),
+                        "Backtracking line search on the residual norm "
+                        "(halving the Newton correction up to 5 times).");
+      prm.declare_entry(
+        "Predictor",
+        "constant",
+        Selection("extrapolated|constant"),
+        "First iterate of a load step: `extrapolated' adds the "
+        "displacement increment of the last converged step, scaled by the "
+        "ratio of the platen increments, to the last converged solution "
+        "(only within a leg: after a reversal of the platen, a cut-back "
+        "or a deletion the increment of the last step is not used); "
+        "`constant' starts from the last converged solution with only the "
+        "platen moved. The converged state is the same to the `Newton "
+        "tolerance'; the extrapolated start saves about a third of the "
+        "Newton iterations, but its converged states are only as close "
+        "as the tolerance, where Newton from the constant start usually "
+        "lands far below it, and past the peak of the cyclic examples "
+        "that moved the collapse of the wall by a cycle "
+        "(contrib/benchmarks/wallette_cyclic/results-2026-11-24c.md): "
+        "`constant' is the default.");
+      prm.declare_entry(
+        "Residual reference",
+        "present reaction",
+        Selection("largest reaction|present reaction"),
+        "What `Newton tolerance' is relative to: `present reaction', the "
+        "norm of the platen reactions of the iterate; `largest "
+        "reaction', the larger of that and the largest such norm of the "
+        "converged steps so far (the peak force). After the wall has "
+        "collapsed the present reactions are near zero, and a tolerance "
+        "relative to them asks for residuals of hundredths of a newton "
+        "that round-off prevents; relative to the peak force the "
+        "tolerance is that of the peak (but a state accepted to it can be "
+        "off the exact one by about the tolerance times the peak force, "
+        "where `present reaction' is exact to round-off on an elastic "
+        "reload). Before the peak of a monotonic run the two are "
+        "equal.");
+      prm.declare_entry(
+        "Assembly threads",
+        "1",
+        Integer(0),
+        "Threads of each MPI rank that evaluate the laws of the cells and "
+        "interfaces in an assembly (dimensionless count; 0: the cores "
+        "divided among the ranks; the environment variable "
+        "DEAL_II_NUM_THREADS caps it). The forces and tangents are summed "
+        "in the order of the cells, yet with more than one thread the "
+        "results have been seen to differ from one thread's in the last "
+        "digits (cause not found), which can change the solution path "
+        "after cracking: 1 is the reference. More threads shorten the "
+        "assembly, a third of the run time of a detailed wallette, on "
+        "idle cores only; on cores shared with other jobs they cost CPU "
+        "time and gain no wall time (contrib/benchmarks/wallette_cyclic/"
+        "results-2026-11-24b.md).");
+      prm.declare_entry(
+        "Linear solver",
+        "direct",
+        Selection("direct|direct klu|cg amg|gmres amg"),
+        "`direct': sparse LU by MUMPS through Trilinos Amesos (parallel); "
+        "`direct klu': Amesos KLU (serial, gathers the matrix); `cg amg': "
+        "conjugate gradients with Trilinos ML algebraic multigrid (for "
+        "symmetric tangents: elastic joints); `gmres amg': GMRES with the "
+        "same preconditioner (any tangent). A Krylov solve that fails "
+        "(1000 iterations, or AztecOO's loss of precision on a cracked "
+        "tangent) is redone by MUMPS, and MUMPS solves the rest of the "
+        "run (damage does not heal); summary.json: "
+        "direct_solver_fallbacks. Below some 10^5 DOFs `direct' is "
+        "usually the fastest for damaged wallettes.");
+      prm.declare_entry(
+        "Factorisation reuse iterations",
+        "0",
+        Integer(0, 1000),
+        "`Linear solver = direct' only: a Newton correction is first "
+        "solved by GMRES with the last LU factorisation (of an earlier "
+        "tangent) as the preconditioner, to `Linear solver tolerance'; "
+        "when GMRES needs more than this many iterations the tangent is "
+        "factorised anew and solved directly (dimensionless count; 0: "
+        "every solve factorises). Saves factorisations while the tangent "
+        "changes little (elastic legs, IMPL-EX steps); the Newton "
+        "iterates differ from those of the direct solve by the linear "
+        "tolerance, the converged states by the `Newton tolerance'.");
+      prm.declare_entry("Linear solver tolerance",
+                        "1e-10",
+                        Double(0),
+                        "Relative residual tolerance of the iterative "
+                        "linear solvers (dimensionless).");
+    }
+
+    void
+    parse_solver_entries(dealii::ParameterHandler    &prm,
+                         brickwork::WalletteSettings &s)
+    {
+      auto positive = [&](const std::string &entry) {
+        const double v = prm.get_double(entry);
+        AssertThrow(v > 0,
+                    ExcParameter(entry,
+                                 "must be positive, got " + prm.get(entry)));
+        return v;
+      };
+      s.protocol.max_cutbacks   = prm.get_integer("Maximum cut-backs");
+      s.protocol.growth         = prm.get_double("Step growth factor");
+      s.newton.max_newton       = prm.get_integer("Maximum Newton iterations");
+      s.newton.newton_tolerance = positive("Newton tolerance");
+      s.newton.line_search      = prm.get_bool("Line search");
+      s.newton.extrapolated_predictor = prm.get("Predictor") == "extrapolated";
+      s.newton.largest_reaction_reference =
+        prm.get("Residual reference") == "largest reaction";
+      s.integrator.threads = prm.get_integer("Assembly threads");
+      s.linear_solver.reuse_iterations =
+        prm.get_integer("Factorisation reuse iterations");
+      s.linear_solver.linear_solver    = prm.get("Linear solver");
+      s.linear_solver.linear_tolerance = positive("Linear solver tolerance");
+    }
+  } // namespace analysis
+} // namespace masonry
