@@ -257,12 +257,7 @@ namespace masonry
                 factorised = true;
                 is_initial = initial_tangent;
               }
-            problem.SetLHS(&du.trilinos_vector());
-            problem.SetRHS(
-              const_cast<Epetra_MultiVector *>(&rhs.trilinos_vector()));
-            quietly([&]() { return direct->Solve(); }, result);
-            if (result != 0 || failed())
-              fail("failed in the solve with the factorised tangent");
+            apply_factors(du, rhs);
           }
 
           /** Whether MUMPS reported an error (INFOG(1) < 0). */
