@@ -115,6 +115,26 @@ namespace masonry
           "and height of a unit are about its size / the enlarged mesh "
           "spacing; mortar layers are one cell thick. Not with `Mesh "
           "distortion'.");
+        for (const char *joint : {"Head", "Collar"})
+          prm.declare_entry(
+            std::string(joint) + " joint fill",
+            "1",
+            Double(),
+            std::string("Filled fraction of the height of every ") +
+              (joint[0] == 'H' ?
+                 "head joint (perpend)" :
+                 "collar joint (the vertical joint between the wythes of "
+                 "the english bond; where a head joint meets it, the "
+                 "column counts as collar joint)") +
+              ", dimensionless, 0 to 1 (`Model = detailed' only): the "
+              "joint is mortar from the bed joint below up to this "
+              "fraction of the unit height, the rest, up to the bed joint "
+              "above, is a void (no cells; the unit faces there are free). "
+              "A workmanship input, as a survey or a dismantled specimen "
+              "shows it. The areas of the joints and of their voids and "
+              "the fill meshed (the grid line lies at the fraction "
+              "exactly) are printed in log.txt and summary.json; 1: full "
+              "joints.");
         prm.declare_entry("Courses",
                           "5",
                           Integer(1, 1000),
@@ -546,6 +566,16 @@ namespace masonry
                     ExcParameter("Joint thickness",
                                  "must be positive with `Model = detailed' "
                                  "(the mortar layer's thickness)"));
+        for (const char *entry : {"Head joint fill", "Collar joint fill"})
+          {
+            const double f = prm.get_double(entry);
+            AssertThrow(f >= 0 && f <= 1,
+                        ExcParameter(entry, "must lie in [0, 1]"));
+            AssertThrow(f == 1 || s.mesh.detailed,
+                        ExcParameter(entry, "needs `Model = detailed'"));
+            (entry[0] == 'H' ? s.mesh.head_joint_fill :
+                               s.mesh.collar_joint_fill) = f;
+          }
         AssertThrow(!s.mesh.detailed || s.mesh.distortion == 0,
                     ExcParameter("Mesh distortion",
                                  "is not supported with `Model = detailed'"));

@@ -74,6 +74,16 @@ namespace masonry
       bool detailed = false;
       /** Thickness of the mortar joints of the detailed model, m. */
       double mortar_thickness = 0;
+      /**
+       * Filled fraction of the height of every head joint and of every
+       * collar joint (detailed model; `Head joint fill', `Collar joint
+       * fill'), 0 to 1: each vertical joint is mortar from the bed joint
+       * below up to this fraction of the course height, the rest up to the
+       * bed joint above is a void (no cells; the unit faces there are
+       * free). Where a head joint meets the collar joint the column counts
+       * as collar joint. 1: full joints.
+       */
+      double head_joint_fill = 1, collar_joint_fill = 1;
     };
 
     /** The platens and the gauge (`Platen ...', `Gauge length'). */

@@ -163,6 +163,14 @@ namespace masonry
             else
               pieces.push_back(unit);
           }
+        // partly filled head and collar joints: a grid line at the top of
+        // the filled part of every course
+        const double fills[2] = {settings.head_joint_fill,
+                                 settings.collar_joint_fill};
+        for (const Piece &p : pieces)
+          for (const double f : fills)
+            if (f > 0 && f < 1)
+              lines[2].push_back(p.lower[2] + f * (p.upper[2] - p.lower[2]));
         // the grid: the lines through every face, each interval divided
         // at about the mesh spacing (mortar intervals, h_m, in one cell)
         std::vector<double> grid[3];
@@ -212,6 +220,57 @@ namespace masonry
                 for (unsigned int i = from[0]; i < to[0]; ++i)
                   owner[i + n[0] * (j + n[1] * k)] = p;
           }
+        // the courses (height ranges of the units), for the vertical joints
+        std::vector<std::pair<double, double>> courses;
+        for (const Piece &p : pieces)
+          courses.emplace_back(p.lower[2], p.upper[2]);
+        std::sort(courses.begin(), courses.end());
+        courses.erase(std::unique(courses.begin(),
+                                  courses.end(),
+                                  [&](const auto &a, const auto &b) {
+                                    return std::abs(a.first - b.first) < tol;
+                                  }),
+                      courses.end());
+        auto is_unit = [&](const int i, const int j, const int k) {
+          return i >= 0 && j >= 0 && k >= 0 && i < int(n[0]) && j < int(n[1]) &&
+                 k < int(n[2]) && owner[i + n[0] * (j + n[1] * k)] != mortar;
+        };
+        // a mortar cell of a vertical joint whose centre lies above the
+        // filled part of its course is a void (no cell)
+        auto is_void = [&](const unsigned int i,
+                           const unsigned int j,
+                           const unsigned int k) {
+          const double zc = 0.5 * (grid[2][k] + grid[2][k + 1]);
+          for (const auto &[bottom, top] : courses)
+            if (zc > bottom && zc < top)
+              {
+                // head joint: the run of mortar cells along x through this
+                // one (a head joint may be cut by the splitting plane of
+                // the next course) ends at units on both sides and is one
+                // joint thick; otherwise (units on both sides in y, or a
+                // crossing) the collar joint
+                int first = i, last = i;
+                while (first > 0 && !is_unit(first - 1, j, k))
+                  --first;
+                while (last + 1 < int(n[0]) && !is_unit(last + 1, j, k))
+                  ++last;
+                const bool head = is_unit(first - 1, j, k) &&
+                                  is_unit(last + 1, j, k) &&
+                                  grid[0][last + 1] - grid[0][first] < 1.5 * hm;
+                const double fill = head ? fills[0] : fills[1];
+                const bool   gone = zc > bottom + fill * (top - bottom);
+                // the cell's share of the joint's area in its plane (a
+                // joint may be meshed as two cells across its thickness)
+                const double area = (grid[0][i + 1] - grid[0][i]) *
+                                    (grid[1][j + 1] - grid[1][j]) *
+                                    (grid[2][k + 1] - grid[2][k]) / hm;
+                (head ? g.head_joint_area : g.collar_joint_area) += area;
+                if (gone)
+                  (head ? g.head_void_area : g.collar_void_area) += area;
+                return gone;
+              }
+          return false; // a bed joint
+        };
         // one vertex per grid point and owner (all owners one, bonded)
         std::map<std::array<unsigned int, 4>, unsigned int> vertex_of;
         std::vector<Point<3>>                               vertices;
@@ -221,7 +280,12 @@ namespace masonry
             for (unsigned int i = 0; i < n[0]; ++i)
               {
                 const unsigned int o = owner[i + n[0] * (j + n[1] * k)];
-                CellData<3>        c;
+                if (o == mortar && is_void(i, j, k))
+                  {
+                    ++g.n_void_cells;
+                    continue;
+                  }
+                CellData<3> c;
                 for (unsigned int v = 0; v < 8; ++v)
                   {
                     const std::array<unsigned int, 4> key = {

@@ -26,6 +26,16 @@ namespace masonry
         unsigned int n_split_units = 0;
         /** Cells of mortar (the detailed model; material id n_bricks). */
         unsigned int n_mortar_cells = 0;
+        /**
+         * Areas of the head joints and the collar joints in their planes
+         * (height x width of a head joint, height x length of the collar
+         * joint, crossings counted as collar), and of their unfilled parts
+         * (MeshSettings::head_joint_fill, collar_joint_fill), m^2.
+         */
+        double head_joint_area = 0, head_void_area = 0;
+        double collar_joint_area = 0, collar_void_area = 0;
+        /** Void (omitted) mortar cells. */
+        unsigned int n_void_cells = 0;
       };
 
       /** Cells of @p box along direction @p d of spacing @p h; 0 if not a

@@ -61,6 +61,27 @@ namespace masonry
                   << settings.mesh.size.height - hm << " m, mortar " << hm
                   << " m thick in " << geometry.n_mortar_cells
                   << " cells; joints are the unit-mortar interfaces\n";
+            if (geometry.n_void_cells > 0)
+              {
+                auto fill = [](const double area, const double void_area) {
+                  return area > 0 ? 1 - void_area / area : 1.;
+                };
+                summary["n_void_cells"]      = geometry.n_void_cells;
+                summary["head_joint_area"]   = geometry.head_joint_area;
+                summary["head_void_area"]    = geometry.head_void_area;
+                summary["collar_joint_area"] = geometry.collar_joint_area;
+                summary["collar_void_area"]  = geometry.collar_void_area;
+                summary["head_joint_fill"] =
+                  fill(geometry.head_joint_area, geometry.head_void_area);
+                summary["collar_joint_fill"] =
+                  fill(geometry.collar_joint_area, geometry.collar_void_area);
+                pcout << "Unfilled joints: " << geometry.n_void_cells
+                      << " mortar cells void; head joints "
+                      << geometry.head_void_area << " of "
+                      << geometry.head_joint_area << " m^2, collar joints "
+                      << geometry.collar_void_area << " of "
+                      << geometry.collar_joint_area << " m^2\n";
+              }
           }
         if (splitting_law)
           {
