@@ -352,6 +352,13 @@ def load_sweep(directory, f_b, f_m):
         r["E0_GPa"] = j["initial_modulus"] / 1e9
         r["modulus_ratio"] = r["E0_GPa"] / r["E_kaushik_GPa"]
         r["modulus_ok"] = abs(r["modulus_ratio"] - 1) <= MODULUS_TOL
+        if r.get("peak_reached"):
+            # Kaushik's relation read as a property of one prism: its
+            # modulus against 550 times its own strength, here the model's
+            r["modulus_own_ratio"] = r["E0_GPa"] / (
+                KAUSHIK_E * r["peak_MPa"] / 1e3)
+            r["modulus_own_ok"] = \
+                abs(r["modulus_own_ratio"] - 1) <= MODULUS_TOL
     r["curve"] = curve
     return r
 
@@ -361,7 +368,8 @@ SWEEP_KEYS = ["name", "f_b", "f_m", "E_b_GPa", "E_m_GPa", "peak_MPa", "strain_at
               "kaushik_MPa", "ec6_fk_MPa", "ec6_mean_MPa", "band_low_MPa",
               "band_high_MPa", "in_band", "E0_GPa", "E_series_GPa",
               "E_kaushik_GPa",
-              "modulus_ratio", "modulus_ok", "cpu_seconds", "status"]
+              "modulus_ratio", "modulus_ok", "modulus_own_ratio",
+              "modulus_own_ok", "cpu_seconds", "status"]
 
 
 def power_fit(sweep):
@@ -406,7 +414,11 @@ def sweep_section(directory, sweep):
         f"{BAND[0]} × Kaushik to {BAND[1]} × EC6 mean; modulus within "
         f"±{100 * MODULUS_TOL:.0f} % of 550 f'_m. E_series = "
         "(h_b + h_m)/(h_b/E_b + h_m/E_m), the unit and mortar moduli in "
-        "series (no lateral restraint): what the inputs alone give.",
+        "series (no lateral restraint): what the inputs alone give. "
+        "E_0 / 550 peak: the same relation applied to the model's own "
+        "peak (Kaushik's E = 550 f'_m relates a prism's modulus to that "
+        "prism's strength); E_0 / 550 f'_m takes Kaushik's predicted "
+        "strength instead, so it also carries the strength's error.",
         "",
         "A peak marked * is at the end of the run (the stress still "
         "rising or within 2 % of it): a lower bound, counted as not met and "
@@ -415,9 +427,9 @@ def sweep_section(directory, sweep):
         "| f_b MPa | f_m MPa | E_b GPa | E_m GPa | model peak MPa | "
         "Kaushik MPa | EC6 f_k MPa | EC6 mean MPa | band MPa | peak in band | "
         "E_0 GPa | E_series GPa | 550 f'_m GPa | E_0 / 550 f'_m | modulus | "
-        "CPU s | status |",
+        "E_0 / 550 peak | modulus (own peak) | CPU s | status |",
         "|---:|---:|---:|---:|---:|---:|---:|---:|---|---|---:|---:|---:|"
-        "---:|---|---:|---|"]
+        "---:|---|---:|---|---:|---|"]
     for r in sweep:
         lines.append(
             f"| {r['f_b']:g} | {r['f_m']:g} | {r['E_b_GPa']:.1f} | "
@@ -430,6 +442,8 @@ def sweep_section(directory, sweep):
             f"{r['E_series_GPa']:.2f} | "
             f"{r['E_kaushik_GPa']:.2f} | {f(r.get('modulus_ratio'))} | "
             f"{mark(r.get('modulus_ok', False))} | "
+            f"{f(r.get('modulus_own_ratio'))} | "
+            f"{mark(r.get('modulus_own_ok', False))} | "
             f"{f(r.get('cpu_seconds'), '{:.1f}')} | {r['status']} |")
     return lines
 
@@ -469,6 +483,15 @@ def targets(data, rows, fits, sweep, fit):
             f"±{100 * MODULUS_TOL:.0f} % of 550 f'_m for every pair: "
             f"{len(good)} of {n}"
             + (f"; E_0 / 550 f'_m = {min(mr):.2f}–{max(mr):.2f}" if mr
+               else "") + " (f'_m: Kaushik's predicted strength).")
+        own = [r for r in sweep if r.get("modulus_own_ok")]
+        mo = [r["modulus_own_ratio"] for r in sweep
+              if "modulus_own_ratio" in r]
+        out.append(
+            f"- {mark(len(own) == n)}: the same with f'_m = the model's own "
+            f"peak (Kaushik's relation between one prism's modulus and its "
+            f"strength): {len(own)} of {n}"
+            + (f"; E_0 / (550 × peak) = {min(mo):.2f}–{max(mo):.2f}" if mo
                else "") + ".")
     means = {r["thickness"]: r.get("peak_stress_MPa") for r in rows
              if r["specimen"].endswith(" mean")}
@@ -653,6 +676,8 @@ def sweep_plots(directory, sweep, fit):
     fig, ax = plt.subplots(figsize=(5.2, 4.6))
     pts = [r for r in sweep if "E0_GPa" in r]
     top = max([r["E_kaushik_GPa"] for r in sweep] +
+              [r["E0_GPa"] / r["modulus_own_ratio"] for r in pts
+               if "modulus_own_ratio" in r] +
               [r["E0_GPa"] for r in pts] + [1]) * 1.2
     x = np.linspace(0, top, 10)
     ax.fill_between(x, (1 - MODULUS_TOL) * x, (1 + MODULUS_TOL) * x,
@@ -665,9 +690,15 @@ def sweep_plots(directory, sweep, fit):
         ax.annotate(f"{r['f_b']:g}/{r['f_m']:g}",
                     (r["E_kaushik_GPa"], r["E0_GPa"]), fontsize=7,
                     xytext=(3, 3), textcoords="offset points")
+        if "modulus_own_ratio" in r:
+            ax.plot(r["E0_GPa"] / r["modulus_own_ratio"], r["E0_GPa"], "o",
+                    mfc="none",
+                    color={10.0: "tab:blue", 20.0: "tab:orange",
+                           40.0: "tab:red"}.get(r["f_b"], "k"), ms=6)
     ax.set_xlim(0, top)
     ax.set_ylim(0, top)
-    ax.set_xlabel("550 f'_m (Kaushik et al.) [GPa]")
+    ax.set_xlabel("550 f'_m [GPa]: filled f'_m Kaushik et al., "
+                  "open f'_m = model peak", fontsize=8)
     ax.set_ylabel("model initial modulus E_0 [GPa]")
     ax.set_title("Initial modulus (labels f_b/f_m in MPa)", fontsize=10)
     ax.grid(alpha=0.3)

@@ -393,7 +393,8 @@ namespace masonry
         "barrier when the LP has at least as many columns as rows "
         "(Mohr-Coulomb joints: the plastic multipliers), else (no tension "
         "no sliding) by the primal simplex, maps the vertex back and "
-        "confirms it with the primal simplex. A dual LP that the simplex "
+        "confirms it with the dual simplex (the primal simplex if the "
+        "mapped basis is not dual feasible). A dual LP that the simplex "
         "proves infeasible (after the barrier: the primal simplex from the "
         "barrier's last point) makes the LP unbounded or infeasible "
         "(unbounded if x = 0 satisfies every bound, else decided by a "
@@ -529,17 +530,37 @@ namespace masonry
             expand(reduced, *dual);
           static_cast<ClpSimplexOther &>(model).restoreFromDual(dual.get());
           // clean up from the restored basis: a vertex of the original
-          // problem; if that vertex is optimal only for Clp's scaled
-          // problem (secondary status), one more pass on the unscaled one
-          // (the barrel corner example came out 2.8e-8 high without it).
-          // Tolerances of 1e-9 here cost the corner example at 12 x 16
-          // blocks per half 130000 iterations (160 s instead of 14 s).
-          model.primal(0);
+          // problem. The basis is the dual LP's optimal one, so it is dual
+          // feasible; its primal values may miss a bound by the dual LP's
+          // tolerances (1e-8..1e-7). The dual simplex repairs that in a few
+          // pivots; the primal simplex, from such a point, wandered through
+          // thousands of degenerate pivots to a vertex up to 2e-5 too high
+          // (the barrel corner settlement at 12 x 16 blocks per half: 7329
+          // + 3875 iterations, 10.5 CPU s, against 3 iterations and 0.04 s;
+          // SciPy's HiGHS agrees with the dual simplex's optimum to 1e-12,
+          // contrib/benchmarks/lp_solvers/results-2026-11-24g.md). With
+          // dual infeasibilities (Clp's checks after the restore) the primal
+          // simplex is the one that starts feasible.
+          const bool dual_feasible = model.numberDualInfeasibilities() == 0;
+          if (dual_feasible)
+            model.dual(0);
+          else
+            model.primal(0);
+          // if that vertex is optimal only for Clp's scaled problem
+          // (secondary status 2: unscaled primal infeasibilities, 3: dual,
+          // 4: both), one more pass on the unscaled one (the barrel corner
+          // example came out 2.8e-8 high without it). Tolerances of 1e-9
+          // cost the corner example at 12 x 16 blocks per half 130000
+          // iterations.
           if (model.isProvenOptimal() && model.secondaryStatus() != 0)
             {
               iterations += model.numberIterations();
+              const bool primal_only = model.secondaryStatus() == 2;
               model.scaling(0);
-              model.primal(1);
+              if (primal_only)
+                model.dual(1);
+              else
+                model.primal(1);
             }
           iterations += model.numberIterations();
           return model.isProvenOptimal() ? DualRoute::optimal :
