@@ -547,20 +547,18 @@ namespace masonry
           else
             model.primal(0);
           // if that vertex is optimal only for Clp's scaled problem
-          // (secondary status 2: unscaled primal infeasibilities, 3: dual,
-          // 4: both), one more pass on the unscaled one (the barrel corner
-          // example came out 2.8e-8 high without it). Tolerances of 1e-9
-          // cost the corner example at 12 x 16 blocks per half 130000
-          // iterations.
+          // (secondary status), one more pass of the primal simplex on the
+          // unscaled one (the barrel corner example came out 2.8e-8 high
+          // without it). Tolerances of 1e-9 cost the corner example at
+          // 12 x 16 blocks per half 130000 iterations; the dual simplex
+          // here (on unscaled primal infeasibilities only) fell back to
+          // the primal one on the Bothwell vault at 24 x 32 blocks per half
+          // and had not finished after 5 CPU minutes (1.3 s by the primal).
           if (model.isProvenOptimal() && model.secondaryStatus() != 0)
             {
               iterations += model.numberIterations();
-              const bool primal_only = model.secondaryStatus() == 2;
               model.scaling(0);
-              if (primal_only)
-                model.dual(1);
-              else
-                model.primal(1);
+              model.primal(1);
             }
           iterations += model.numberIterations();
           return model.isProvenOptimal() ? DualRoute::optimal :
