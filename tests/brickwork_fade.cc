@@ -22,6 +22,12 @@
  * `Deletion crushing length' alone: the one-cell cube fades with its
  * shortening since the step at which it passed `Deletion strain'; the same
  * checks with that fade (check_crushing).
+ *
+ * `Deletion stress' s_d (check_stress): the one-cell cube passes `Deletion
+ * strain' at its first step but carries E eps > s_d, so it stays, however
+ * far past the strain, until a converged step at which its stress E eps is
+ * at most s_d while its lateral strain nu eps is still past e_d (on
+ * unloading); it is deleted then and carries nothing from the next step on.
  */
 #include <iomanip>
 
@@ -164,6 +170,75 @@ namespace
           "0.006 peak = E 0.006 (1 - (0.006 - 0.0044) l / w_c)");
     check(zero_at_end, "crushing: the cell deleted at the end of the fade");
   }
+
+  /**
+   * `Deletion stress' s_d: a cell past `Deletion strain' that still carries
+   * more than s_d stays. Closed form of the one-cell elastic cube: row i
+   * of curve.csv has the stress E eps_i unless the cell was deleted after
+   * an earlier step j, which happens at the first j with nu eps_j > e_d and
+   * E eps_j <= s_d; the deletion count of row j is then 1.
+   */
+  void
+  check_stress()
+  {
+    const double       e_d = 1e-5, s_d = 2e6;
+    std::ostringstream t;
+    t << std::setprecision(17)
+      << "set Brick length = 0.09\nset Brick width = 0.09\n"
+         "set Brick height = 0.09\nset Joint thickness = 0.01\n"
+         "set Courses = 1\nset Length in bricks = 1\n"
+         "set Elements along the length = 1\n"
+         "set Elements along the width = 1\n"
+         "set Elements along the height = 1\n"
+         "set Platen lateral restraint = free\n"
+         "set Protocol = cyclic\nset Cycle amplitudes = 0.0009, 0.002\n"
+         "set Cycles per amplitude = 1\nset Unloading stress = 0.1e6\n"
+         "set Target strain = 0.002\nset Number of steps = 8\n"
+         "set Deletion strain = "
+      << e_d << "\nset Deletion stress = " << s_d << "\n";
+    std::ostringstream m;
+    m << std::setprecision(17)
+      << "subsection Brick material\nsubsection Elastic\n"
+      << "set Young's modulus = " << E << "\nset Poisson's ratio = " << nu
+      << "\nend\nend\n";
+    const masonry::Json s = run("stress", prm(t.str(), m.str()));
+    check(s.at("status").as_string() == "completed",
+          "stress: completed to the last amplitude");
+    const auto   rows    = curve("stress");
+    bool         deleted = false, kept = false, count = true;
+    double       error = 0, deleted_at = -1, deleted_stress = -1;
+    unsigned int n_rows_after = 0;
+    for (unsigned int i = 1; i < rows.size(); ++i)
+      {
+        const double eps      = rows[i][2];
+        const double expected = deleted ? 0. : E * eps;
+        error = std::max(error, std::abs(rows[i][4] - expected) / (E * 0.01));
+        if (deleted)
+          ++n_rows_after;
+        // past the strain while carrying more than s_d: kept
+        if (!deleted && nu * eps > e_d && E * eps > s_d)
+          kept = true;
+        const bool now = !deleted && nu * eps > e_d && E * eps <= s_d;
+        if (now)
+          {
+            deleted_at     = eps;
+            deleted_stress = E * eps;
+          }
+        deleted = deleted || now;
+        count   = count && rows[i][10] == (deleted ? 1 : 0);
+      }
+    std::cout << "stress: deleted after the step at strain " << std::fixed
+              << std::setprecision(6) << deleted_at << " (stress "
+              << std::setprecision(3) << deleted_stress * 1e-6 << " MPa), then "
+              << n_rows_after << " steps\n";
+    check(kept, "stress: the cell past e_d carrying more than s_d stayed");
+    check(deleted && n_rows_after > 0 && deleted_stress > 0,
+          "stress: deleted on unloading, once it carried at most s_d");
+    check(count, "stress: deleted cells in curve.csv as the closed form");
+    check(error < 1e-5,
+          "stress: every point is E eps before the deletion, 0 after (1e-5 "
+          "of E x 0.01)");
+  }
 } // namespace
 
 int
@@ -173,4 +248,5 @@ main(int argc, char **argv)
   check_mesh(1, true);
   check_mesh(2, false);
   check_crushing();
+  check_stress();
 }

@@ -35,7 +35,10 @@
  *     the compressive peak is beta f_c, beta = min(1, 1 / (0.8 + 170
  *     eps_1)) of Vecchio & Collins (1986) with eps_1 the tensile envelope
  *     strain, which the compression leaves unchanged; without the entry
- *     the cracked unit peaks at f_c.
+ *     the cracked unit peaks at f_c. With `Cracked compression residual
+ *     ratio = 0.4' the same paths to eps_1 = 0.003 and 0.03 peak at
+ *     max(0.4, beta) f_c: unchanged at 0.003 (beta 0.763), 0.4 f_c at 0.03
+ *     (beta 0.169).
  *
  * The peak of a path is located by restarting from the step before the
  * largest |sigma_y| with 50 times smaller steps, three times.
@@ -415,6 +418,41 @@ main(int argc, char **argv)
     vault_tests::check(lowered,
                        "without the entry the same cracked unit peaks at "
                        "f_c (1e-6)");
+  }
+
+  // (d) with a residual ratio: beta bounded below by 0.4
+  {
+    const auto bounded =
+      material("damage plasticity",
+               "set Tension-compression interaction = true\n"
+               "set Cracked compression softening = 170\n"
+               "set Cracked compression residual ratio = 0.4\n");
+    double worst = 0;
+    for (const double eps_1 : {0.003, 0.03})
+      {
+        PathPoint start;
+        start.state.assign(n_state(*bounded), 0.);
+        const auto pulled = advance(*bounded, Control(), start, eps_1, 200, 0);
+        const auto back =
+          advance(*bounded,
+                  Control(),
+                  pulled.back(),
+                  state_value(*bounded, pulled.back().state, "plastic_strain"),
+                  20,
+                  0);
+        const PathPoint top =
+          peak(*bounded, Control(), -4 * eps_c, 2000, &back.back());
+        const double expected =
+          std::max(0.4, std::min(1., 1 / (0.8 + 170 * eps_1))) * f_c;
+        log() << "residual ratio 0.4, cracked to " << eps_1
+              << ": compressive peak " << -top.stress[1][1] << ", expected "
+              << expected << "\n";
+        worst = std::max(worst, std::abs(-top.stress[1][1] / expected - 1));
+      }
+    vault_tests::check(worst < 1e-6,
+                       "unit with `Cracked compression residual ratio = 0.4', "
+                       "cracked to eps_1 = 0.003 and 0.03: peak = max(0.4, "
+                       "beta) f_c (1e-6)");
   }
 
   // (b) the mortar

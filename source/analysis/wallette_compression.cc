@@ -374,6 +374,16 @@ namespace masonry
           "dissipates f x this / 2 per unit area, so 2 G_fc / f_b gives the "
           "unit's compressive fracture energy); it is deleted when the "
           "factor reaches 0. 0: no crushing fade.");
+        prm.declare_entry(
+          "Deletion stress",
+          "0",
+          Double(0),
+          "Deletion only of cells that carry nothing, Pa (>= 0): a cell "
+          "past `Deletion strain' (or at the end of its fade) is deleted "
+          "only once the largest absolute principal value of its "
+          "cell-averaged stress is at most this; until then it stays, "
+          "whatever its strain. 0: no such condition (a cell goes when its "
+          "strain passes the threshold, whatever it carries).");
         prm.declare_entry("Maximum deletions per step",
                           "10",
                           Integer(1, 100000),
@@ -517,6 +527,7 @@ namespace masonry
           prm.get_double("Deletion fade opening");
         s.specimen.deletion_crushing_length =
           prm.get_double("Deletion crushing length");
+        s.specimen.deletion_stress = prm.get_double("Deletion stress");
         s.specimen.max_deletions =
           prm.get_integer("Maximum deletions per step");
         s.specimen.strength_scatter = prm.get_double("Strength scatter");

@@ -571,9 +571,14 @@ namespace masonry
             progress.applied = next;
             ++progress.step;
             ++steps_this_run;
-            unsigned int       faded = 0;
-            const unsigned int removed =
-              delete_cells(settings.specimen, joints, system, specimen, faded);
+            unsigned int       faded   = 0;
+            const unsigned int removed = delete_cells(settings.specimen,
+                                                      joints,
+                                                      material,
+                                                      bricks,
+                                                      system,
+                                                      specimen,
+                                                      faded);
             // the deleted cells' DOFs are fixed from now on: no
             // extrapolation across the change of the structure
             if (removed > 0)

@@ -129,6 +129,7 @@ namespace masonry
         {"Wallette/Deletion strain", 0, 10, "(dimensionless)"},
         {"Wallette/Deletion fade opening", 0, 1, "m"},
         {"Wallette/Deletion crushing length", 0, 1, "m"},
+        {"Wallette/Deletion stress", 0, 1e10, "Pa"},
         {"Wallette/Gauge length", 0, 100, "m"},
         // a tolerance below 1e-6 redoes the same step forever
         {"Wallette/IMPL-EX damage tolerance", 1e-6, 1, "(dimensionless)"},

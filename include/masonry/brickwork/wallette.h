@@ -189,6 +189,11 @@ namespace masonry
        * deletion_crushing_length (s: largest compressive principal strain
        * of the cell), m (0: no crushing fade). */
       double deletion_crushing_length = 0;
+      /** A cell past deletion_strain (or at the end of its fade) is
+       * deleted only when the largest absolute principal value of its
+       * cell-averaged stress is at most this, Pa: a cell that still
+       * carries load stays (0: no such condition). */
+      double deletion_stress = 0;
       /** At most this many cells are deleted after one step. */
       unsigned int max_deletions = 10;
       /** Coefficient of variation of the strengths of bricks and joints

@@ -388,7 +388,8 @@ namespace masonry
     {
       if (c_cracked == 0 || eps_1 <= 0)
         return 1.;
-      return std::min(1., 1 / (0.8 + c_cracked * eps_1));
+      return std::max(beta_residual,
+                      std::min(1., 1 / (0.8 + c_cracked * eps_1)));
     }
 
     double

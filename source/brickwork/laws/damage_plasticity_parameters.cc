@@ -207,6 +207,19 @@ namespace masonry
         "point is compressed moves it along its envelope (plastic strain "
         "and compressive damage grow). beta < 1 once eps_1 > 0.2 / c "
         "(0.00118 for c = 170); 0.61 at 0.005, 0.24 at 0.02.");
+      prm.declare_entry(
+        "Cracked compression residual ratio",
+        "0",
+        Double(0, 1),
+        "Lower bound beta_r of the factor beta of `Cracked compression "
+        "softening' (dimensionless, 0 to 1; 0: none, beta falls towards 0 "
+        "as the crack opens): beta = max(beta_r, min(1, 1 / (0.8 + c "
+        "eps_1))), so a cracked point keeps at least beta_r f_c in "
+        "compression parallel to its crack (the strut between cracks; "
+        "design codes reduce a cracked strut's strength by a constant "
+        "factor of about 0.5-0.6, recalled). Without it a cell whose "
+        "crack keeps opening loses its whole compressive strength, and a "
+        "column of cells in series with it unloads at once.");
     }
 
     void
@@ -240,6 +253,7 @@ namespace masonry
       interaction   = prm.get_bool("Tension-compression interaction");
       k_confinement = prm.get_double("Confinement coefficient");
       c_cracked     = prm.get_double("Cracked compression softening");
+      beta_residual = prm.get_double("Cracked compression residual ratio");
       {
         const std::string flow = prm.get("Plastic Poisson's ratio");
         radial_flow            = flow == "elastic";

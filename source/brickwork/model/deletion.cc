@@ -43,9 +43,52 @@ namespace masonry
         return orphans;
       }
 
+      SymmetricTensor<2, 3>
+      cell_stress(const DoFHandler<3>::active_cell_iterator &cell,
+                  const System::Vector                      &ghosted,
+                  const BrickMaterial                       &material,
+                  const PointStates                         &bricks,
+                  const Specimen                            &specimen,
+                  FEValues<3>                               &fe_values)
+      {
+        const unsigned int                 c = cell->active_cell_index();
+        std::vector<SymmetricTensor<2, 3>> eps(fe_values.n_quadrature_points);
+        fe_values.reinit(cell);
+        fe_values[FEValuesExtractors::Vector(0)]
+          .get_function_symmetric_gradients(ghosted, eps);
+        const bool          linear = material.is_linear();
+        std::vector<double> initial(bricks.n_values()),
+          scratch(bricks.n_values());
+        material.initial_state(initial);
+        BrickPoint point;
+        point.characteristic_length = specimen.cell_length[c];
+        point.strength_factor       = specimen.cell_factor[c];
+        point.region                = specimen.cell_region[c];
+        SymmetricTensor<2, 3> mean, sigma;
+        double                volume = 0;
+        for (unsigned int q = 0; q < eps.size(); ++q)
+          {
+            // from the converged state at the converged strain: the
+            // stress of the step, no further loading
+            const unsigned int p = eps.size() * c + q;
+            material.update_state(eps[q],
+                                  linear ? ConstStateView(initial.data(),
+                                                          initial.size()) :
+                                           bricks.old(p),
+                                  point,
+                                  StateView(scratch.data(), scratch.size()),
+                                  sigma);
+            mean += sigma * fe_values.JxW(q);
+            volume += fe_values.JxW(q);
+          }
+        return specimen.fade[c] * mean / volume;
+      }
+
       unsigned int
       delete_cells(const SpecimenSettings &settings,
                    const Joints           &joints,
+                   const BrickMaterial    &material,
+                   const PointStates      &bricks,
                    System                 &system,
                    Specimen               &specimen,
                    unsigned int           &faded)
@@ -61,6 +104,9 @@ namespace masonry
         FEValues<3>                                  fe_values(system.fe,
                               quadrature,
                               update_gradients | update_JxW_values);
+        FEValues<3>                                  stress_values(system.fe,
+                                  quadrature,
+                                  update_gradients | update_JxW_values);
         std::vector<SymmetricTensor<2, 3>>           eps(8);
         const FEValuesExtractors::Vector             displacement(0);
         std::vector<std::pair<double, unsigned int>> candidates, fades, splits,
@@ -89,9 +135,25 @@ namespace masonry
                 crushing > 0 && specimen.split_shortening[c] >= 0;
               if (e1 <= settings.deletion_strain && !split)
                 continue;
+              // a cell that still carries more than `Deletion stress'
+              // stays (its stress: the largest absolute principal value
+              // of the cell average)
+              auto carries = [&]() {
+                if (settings.deletion_stress <= 0)
+                  return false;
+                const auto s = eigenvalues(cell_stress(cell,
+                                                       system.ghosted,
+                                                       material,
+                                                       bricks,
+                                                       specimen,
+                                                       stress_values));
+                return std::max(std::abs(s[0]), std::abs(s[2])) >
+                       settings.deletion_stress;
+              };
               if (opening <= 0 && crushing <= 0)
                 {
-                  candidates.emplace_back(e1, c);
+                  if (!carries())
+                    candidates.emplace_back(e1, c);
                   continue;
                 }
               // the fade: linear in the opening past the threshold (the
@@ -115,10 +177,10 @@ namespace masonry
                     split ? shortening - specimen.split_shortening[c] : 0.;
                   f = std::min(f, 1 - std::max(since, 0.) * l / crushing);
                 }
-              if (f <= 0)
+              if (f <= 0 && !carries())
                 candidates.emplace_back(e1, c);
               else if (f < specimen.fade[c])
-                fades.emplace_back(f, c);
+                fades.emplace_back(f <= 0 ? fade_floor : f, c);
             }
         for (const auto &part :
              Utilities::MPI::all_gather(system.comm, shortenings))

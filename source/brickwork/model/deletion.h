@@ -10,9 +10,13 @@
 #ifndef masonry_brickwork_model_deletion_h
 #define masonry_brickwork_model_deletion_h
 
+#include <masonry/brickwork/brick_material.h>
 #include <masonry/brickwork/wallette.h>
 
+#include <deal.II/fe/fe_values.h>
+
 #include "joints.h"
+#include "point_states.h"
 #include "specimen.h"
 #include "system.h"
 
@@ -28,14 +32,31 @@ namespace masonry
        * system.orphans and its constraints); how many cells. With
        * `Deletion fade opening' > 0 the cells past the threshold fade out
        * first (Specimen::fade) and are deleted at the end of the fade;
+       * with `Deletion stress' > 0 a cell is deleted only once the largest
+       * absolute principal value of its cell-averaged stress (of
+       * @p material at the converged states @p bricks) is at most that;
        * @p faded: how many fade factors changed.
        */
       unsigned int
       delete_cells(const SpecimenSettings &settings,
                    const Joints           &joints,
+                   const BrickMaterial    &material,
+                   const PointStates      &bricks,
                    System                 &system,
                    Specimen               &specimen,
                    unsigned int           &faded);
+
+      /** The cell-averaged stress (Pa) of cell @p cell (its fade
+       * included) at the displacement @p ghosted: the stress of each
+       * point from its converged state in @p bricks at the converged
+       * strain, as solution.pvd shows it. */
+      dealii::SymmetricTensor<2, 3>
+      cell_stress(const dealii::DoFHandler<3>::active_cell_iterator &cell,
+                  const System::Vector                              &ghosted,
+                  const BrickMaterial                               &material,
+                  const PointStates                                 &bricks,
+                  const Specimen                                    &specimen,
+                  dealii::FEValues<3>                               &fe_values);
 
       /** The DOFs in no remaining cell of @p specimen. */
       std::vector<dealii::types::global_dof_index>

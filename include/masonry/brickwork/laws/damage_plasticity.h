@@ -50,7 +50,8 @@
  * - `Cracked compression softening' c: the compressive measure is also
  *   divided by beta = min(1, 1 / (0.8 + c kappa_t)), kappa_t the tensile
  *   envelope strain at the start of the step (Vecchio & Collins 1986,
- *   c = 170: a cracked point peaks at beta f_c in compression);
+ *   c = 170: a cracked point peaks at beta f_c in compression), bounded
+ *   below by `Cracked compression residual ratio' beta_r;
  * - `Plastic Poisson's ratio' nu_p: the compressive plastic strain grows
  *   along C_p^-1 : s- (compliance with E0, nu_p) instead of C0^-1 : s-,
  *   with the multiplier from a scalar root search (flow()); a confined
@@ -390,6 +391,8 @@ namespace masonry
       double alpha = 0, lambda = 0, mu = 0;
       /** `Cracked compression softening' c (0: off). */
       double c_cracked = 0;
+      /** `Cracked compression residual ratio': the lower bound of beta. */
+      double beta_residual = 0;
       /** `Compressive softening', `Tension-compression interaction'. */
       bool softening = true, interaction = false;
       /** `Plastic Poisson's ratio': elastic (radial) or nu_p. */
