@@ -45,6 +45,31 @@ namespace
     return e1 <= e_d ? 1. : std::max(0., 1 - (e1 - e_d) * l / w);
   }
 
+  /**
+   * The parameter text of the 0.1 m cube of the elastic unit (E, nu) in
+   * n x n x n cells between frictionless platens; @p loading: the protocol
+   * and deletion entries of subsection Wallette.
+   */
+  std::string
+  cube(const unsigned int n, const std::string &loading)
+  {
+    std::ostringstream t;
+    t << "set Brick length = 0.09\nset Brick width = 0.09\n"
+         "set Brick height = 0.09\nset Joint thickness = 0.01\n"
+         "set Courses = 1\nset Length in bricks = 1\n"
+         "set Elements along the length = "
+      << n << "\nset Elements along the width = " << n
+      << "\nset Elements along the height = " << n
+      << "\nset Platen lateral restraint = free\n"
+      << loading;
+    std::ostringstream m;
+    m << std::setprecision(17)
+      << "subsection Brick material\nsubsection Elastic\n"
+      << "set Young's modulus = " << E << "\nset Poisson's ratio = " << nu
+      << "\nend\nend\n";
+    return prm(t.str(), m.str());
+  }
+
   void
   check_mesh(const unsigned int n, const bool to_the_end)
   {
@@ -52,28 +77,15 @@ namespace
     const double       l          = 0.1 / n;
     std::ostringstream t;
     t << std::setprecision(17)
-      << "set Brick length = 0.09\nset Brick width = 0.09\n"
-         "set Brick height = 0.09\nset Joint thickness = 0.01\n"
-         "set Courses = 1\nset Length in bricks = 1\n"
-         "set Elements along the length = "
-      << n << "\nset Elements along the width = " << n
-      << "\nset Elements along the height = " << n
-      << "\nset Platen lateral restraint = free\n"
-         "set Protocol = cyclic\nset Cycle amplitudes = "
-      << amplitudes
+      << "set Protocol = cyclic\nset Cycle amplitudes = " << amplitudes
       << "\nset Cycles per amplitude = 2\nset Unloading stress = 0.1e6\n"
          "set Target strain = "
       << (to_the_end ? 0.013 : 0.006)
       << "\nset Number of steps = " << (to_the_end ? 65 : 30)
       << "\nset Deletion strain = " << e_d
       << "\nset Deletion fade opening = " << w << "\n";
-    std::ostringstream m;
-    m << std::setprecision(17)
-      << "subsection Brick material\nsubsection Elastic\n"
-      << "set Young's modulus = " << E << "\nset Poisson's ratio = " << nu
-      << "\nend\nend\n";
     const std::string   name = "cube_" + std::to_string(n);
-    const masonry::Json s    = run(name, prm(t.str(), m.str()));
+    const masonry::Json s    = run(name, cube(n, t.str()));
     check(s.at("status").as_string() == "completed",
           name + ": completed to the last amplitude");
     // columns: 2 strain, 4 stress (compression positive), 10 deleted
@@ -118,24 +130,12 @@ namespace
     const double       e_s = 0.00107, w_c = 2e-4, l = 0.1;
     std::ostringstream t;
     t << std::setprecision(17)
-      << "set Brick length = 0.09\nset Brick width = 0.09\n"
-         "set Brick height = 0.09\nset Joint thickness = 0.01\n"
-         "set Courses = 1\nset Length in bricks = 1\n"
-         "set Elements along the length = 1\n"
-         "set Elements along the width = 1\n"
-         "set Elements along the height = 1\n"
-         "set Platen lateral restraint = free\n"
-         "set Protocol = cyclic\nset Cycle amplitudes = 0.006, 0.013\n"
+      << "set Protocol = cyclic\nset Cycle amplitudes = 0.006, 0.013\n"
          "set Cycles per amplitude = 2\nset Unloading stress = 0.1e6\n"
          "set Target strain = 0.013\nset Number of steps = 65\n"
          "set Deletion strain = "
       << e_s << "\nset Deletion crushing length = " << w_c << "\n";
-    std::ostringstream m;
-    m << std::setprecision(17)
-      << "subsection Brick material\nsubsection Elastic\n"
-      << "set Young's modulus = " << E << "\nset Poisson's ratio = " << nu
-      << "\nend\nend\n";
-    const masonry::Json s = run("crushing", prm(t.str(), m.str()));
+    const masonry::Json s = run("crushing", cube(1, t.str()));
     check(s.at("status").as_string() == "completed",
           "crushing: completed to the last amplitude");
     const auto rows = curve("crushing");
@@ -184,24 +184,12 @@ namespace
     const double       e_d = 1e-5, s_d = 2e6;
     std::ostringstream t;
     t << std::setprecision(17)
-      << "set Brick length = 0.09\nset Brick width = 0.09\n"
-         "set Brick height = 0.09\nset Joint thickness = 0.01\n"
-         "set Courses = 1\nset Length in bricks = 1\n"
-         "set Elements along the length = 1\n"
-         "set Elements along the width = 1\n"
-         "set Elements along the height = 1\n"
-         "set Platen lateral restraint = free\n"
-         "set Protocol = cyclic\nset Cycle amplitudes = 0.0009, 0.002\n"
+      << "set Protocol = cyclic\nset Cycle amplitudes = 0.0009, 0.002\n"
          "set Cycles per amplitude = 1\nset Unloading stress = 0.1e6\n"
          "set Target strain = 0.002\nset Number of steps = 8\n"
          "set Deletion strain = "
       << e_d << "\nset Deletion stress = " << s_d << "\n";
-    std::ostringstream m;
-    m << std::setprecision(17)
-      << "subsection Brick material\nsubsection Elastic\n"
-      << "set Young's modulus = " << E << "\nset Poisson's ratio = " << nu
-      << "\nend\nend\n";
-    const masonry::Json s = run("stress", prm(t.str(), m.str()));
+    const masonry::Json s = run("stress", cube(1, t.str()));
     check(s.at("status").as_string() == "completed",
           "stress: completed to the last amplitude");
     const auto   rows    = curve("stress");
