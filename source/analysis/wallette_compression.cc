@@ -492,11 +492,7 @@ namespace masonry
       {
         const double joint    = prm.get_double("Joint thickness");
         auto         positive = [&](const std::string &entry) {
-          const double v = prm.get_double(entry);
-          AssertThrow(v > 0,
-                      ExcParameter(entry,
-                                   "must be positive, got " + prm.get(entry)));
-          return v;
+          return positive_entry(prm, entry);
         };
         s.mesh.size.length      = positive("Brick length") + joint;
         s.mesh.size.width       = positive("Brick width") + joint;

@@ -133,16 +133,22 @@ namespace masonry
                         "linear solvers (dimensionless).");
     }
 
+    double
+    positive_entry(dealii::ParameterHandler &prm, const std::string &entry)
+    {
+      const double v = prm.get_double(entry);
+      AssertThrow(v > 0,
+                  ExcParameter(entry,
+                               "must be positive, got " + prm.get(entry)));
+      return v;
+    }
+
     void
     parse_solver_entries(dealii::ParameterHandler    &prm,
                          brickwork::WalletteSettings &s)
     {
       auto positive = [&](const std::string &entry) {
-        const double v = prm.get_double(entry);
-        AssertThrow(v > 0,
-                    ExcParameter(entry,
-                                 "must be positive, got " + prm.get(entry)));
-        return v;
+        return positive_entry(prm, entry);
       };
       s.protocol.max_cutbacks   = prm.get_integer("Maximum cut-backs");
       s.protocol.growth         = prm.get_double("Step growth factor");

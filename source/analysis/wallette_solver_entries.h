@@ -8,6 +8,8 @@
 #ifndef masonry_analysis_wallette_solver_entries_h
 #define masonry_analysis_wallette_solver_entries_h
 
+#include <string>
+
 namespace dealii
 {
   class ParameterHandler;
@@ -25,6 +27,11 @@ namespace masonry
     /** Declare the solver entries in the present subsection of @p prm. */
     void
     declare_solver_entries(dealii::ParameterHandler &prm);
+
+    /** The value of @p entry of @p prm; throws ExcParameter naming the
+     * entry unless it is positive. */
+    double
+    positive_entry(dealii::ParameterHandler &prm, const std::string &entry);
 
     /** Read the solver entries of @p prm into @p s. */
     void
