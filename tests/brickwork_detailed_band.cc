@@ -20,7 +20,9 @@
  * and peaks at 6.1 MPa (the same within 0.1 % at 4 x 2 x 2 cells) with
  * the band across the layer, h_m (tests/brickwork_mortar_band), inside the
  * band 2.9-7.6 MPa. Inputs as a laboratory
- * gives them: contrib/study/sweep-detailed.prm with the unit and mortar
+ * gives them: the study sweep's former parameter file (contrib/study/
+ * sweep-detailed.prm, replaced on 2026-11-24 by the single-leaf monotonic
+ * example; no splitting interfaces, no deletion) with the unit and mortar
  * values from f_b and f_m by the relations of contrib/study/study.py,
  * sweep_inputs() (unit `Compressive strength' = f_b with `Compressive
  * strength definition' = normalised, from which the law derives its

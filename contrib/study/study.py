@@ -4,8 +4,10 @@ the options): (a) the nine specimens, per thickness and seed a copy of the
 cyclic example parameter file with the seed and the output directory
 changed (with the detailed model, the default, see detailed_specimen());
 (b) the single-leaf sweep over the unit strength f_b and the mortar
-strength f_m: a monotonic copy of contrib/study/sweep-detailed.prm (detailed
-model) or of the single-leaf cyclic example (simplified model) with the
+strength f_m: a monotonic copy of the single-leaf monotonic example
+prm/examples/wallette-single-monotonic.prm (detailed model: the sweep's
+f_b = 20, f_m = 5 MPa pair is that example with a longer target strain)
+or of the single-leaf cyclic example (simplified model) with the
 unit and mortar inputs of each pair (see sweep_inputs()); each a 1-rank
 masonry run, several at a time, with its CPU time recorded; then report.py
 writes the tables, the targets of issue 16 and the plots."""
@@ -49,6 +51,10 @@ SWEEP_QUICK = dict(SWEEP, **{"Elements along the length": "2",
 SWEEP_QUICK_STEP = 2e-4
 # the detailed sweep stops after this many times the nominal number of steps
 SWEEP_STEP_CAP = 3
+# the detailed model's sweep and the mortar and bond of a specimen turned
+# detailed come from the single-leaf monotonic example
+DETAILED_BASE = os.path.join(root, "prm", "examples",
+                             "wallette-single-monotonic.prm")
 
 
 def sweep_target(f_b, E_m, h_b, h_m):
@@ -244,9 +250,11 @@ def make_sweep_prm(f_b, f_m, directory, quick, model):
 
 
 def make_detailed_sweep_prm(f_b, f_m, directory, quick):
-    """The sweep pair for the detailed model: contrib/study/
-    sweep-detailed.prm with the unit and mortar inputs of sweep_inputs()."""
-    source = os.path.join(here, "sweep-detailed.prm")
+    """The sweep pair for the detailed model: the single-leaf monotonic
+    example (DETAILED_BASE) with the unit and mortar inputs of
+    sweep_inputs(), run to sweep_target(), with only the curve tables
+    written (no VTU, no plots)."""
+    source = DETAILED_BASE
     text = open(source).read()
     name = f"sweep-fb{f_b:g}-fm{f_m:g}"
     out = os.path.join(directory, name)
@@ -262,13 +270,16 @@ def make_detailed_sweep_prm(f_b, f_m, directory, quick):
     # number of steps (status `interrupted')
     settings = {"Target strain": f"{target:.4g}",
                 "Number of steps": str(n),
-                "Maximum steps": str(SWEEP_STEP_CAP * n)}
+                "Maximum steps": str(SWEEP_STEP_CAP * n),
+                "Output interval": "0", "Write VTU": "false"}
     if quick:
         settings.update({"Elements along the length": "2",
                          "Elements along the width": "1",
                          "Elements along the height": "1"})
     for key, value in settings.items():
         text, _ = set_in(text, ["Wallette"], key, value)
+    text, _ = set_in(text, ["Postprocess", "Wallette"],
+                     "List of postprocessors", "curve tables")
     brick = ["Brick material", "Damage plasticity"]
     for key, value in (("Compressive strength", x["f_b"]),
                        ("Tensile strength", x["f_bt"]),
@@ -378,8 +389,8 @@ def top_block(text, name):
 def detailed_specimen(text, model):
     """A cyclic example turned into the detailed model: if it does not
     select the model itself, `Model = detailed' in subsection Wallette and
-    the mortar law and the bond interfaces of contrib/study/
-    sweep-detailed.prm (f_m = 5 MPa, composite bond with friction), and
+    the mortar law and the bond interfaces of DETAILED_BASE (f_m = 5 MPa,
+    composite bond with friction), and
     the units' `Tension-compression interaction'; the example's unit
     strength (20 MPa) and its loading are kept."""
     if get_in(text, ["Wallette"], MODEL_ENTRY) == model:
@@ -387,7 +398,7 @@ def detailed_specimen(text, model):
     text, _ = set_in(text, ["Wallette"], MODEL_ENTRY, model)
     text, _ = set_in(text, ["Brick material", "Damage plasticity"],
                      "Tension-compression interaction", "true")
-    detailed = open(os.path.join(here, "sweep-detailed.prm")).read()
+    detailed = open(DETAILED_BASE).read()
     for block in ("Mortar material", "Interface law"):
         new = top_block(detailed, block)
         new_text = detailed[new[0]:new[1]] if new else ""
