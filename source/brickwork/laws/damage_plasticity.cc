@@ -315,6 +315,13 @@ namespace masonry
       auto slope = [&](const double x) {
         return x <= 0 ? 0. : x >= delta ? 1. : x * (4 - 3 * x / delta) / delta;
       };
+      // all three principal stresses clearly compressive (the eigenvalues
+      // in closed form, much cheaper than the eigenvectors): P = 0 and
+      // its derivative 0 exactly, as the sum below would give (h and its
+      // slope vanish at x <= 0; the margin keeps the sign of the largest
+      // eigenvalue beyond the round-off of either computation)
+      if (dealii::eigenvalues(s)[0] < -1e-6 * s.norm())
+        return P;
       const auto eig = dealii::eigenvectors(s);
       if (largest)
         *largest = std::max(eig[0].first, 0.);
