@@ -396,7 +396,7 @@ namespace masonry
         "confirms it with the dual simplex (the primal simplex if the "
         "mapped basis is not dual feasible; both without scaling, after a "
         "pass of the primal simplex on the unscaled dual LP, when the "
-        "vertex is optimal only for Clp's scaled dual LP; the LP is solved "
+        "barrier's vertex is optimal only for Clp's scaled dual LP; the LP is solved "
         "directly if this clean-up does not end within 1000 + rows / 20 "
         "iterations). A dual LP that the simplex "
         "proves infeasible (after the barrier: the primal simplex from the "
@@ -541,7 +541,13 @@ namespace masonry
           // tolerances, and the clean-up is then made without scaling too
           // (6 iterations; SciPy's HiGHS agrees to 2e-9,
           // contrib/benchmarks/lp_solvers/results-2026-11-24h.md)
-          const bool unscaled = solved.secondaryStatus() != 0;
+          // Only after the barrier: the primal simplex on the dual LP (no
+          // tension no sliding) also ends with secondary status 2, but the
+          // restored basis needs 3 pivots, and the polish and an unscaled
+          // clean-up took 17 CPU s more on Bothwell at 18 x 24 blocks per
+          // half (4.2 CPU s without).
+          const bool unscaled =
+            method == "barrier" && solved.secondaryStatus() != 0;
           if (unscaled)
             {
               solved.scaling(0);
