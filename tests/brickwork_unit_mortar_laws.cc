@@ -39,6 +39,17 @@
  *     ratio = 0.4' the same paths to eps_1 = 0.003 and 0.03 peak at
  *     max(0.4, beta) f_c: unchanged at 0.003 (beta 0.763), 0.4 f_c at 0.03
  *     (beta 0.169).
+ * (e) unit with `Tensile plastic strain ratio = 0.1' and `Maximum damage =
+ *     0.95', a crack opened by e_xx to 0.02 under sigma_yy = 0 and a
+ *     compression sigma_zz = -q parallel to it (q = 0, 4 MPa, below the
+ *     elastic limit): at every step sigma_xx is the tension envelope at
+ *     the point's envelope strain kappa_t and e_xx = p(kappa_t) + (T + nu
+ *     q) / E0 (T, p: the envelope's effective threshold and plastic
+ *     strain, computed here from the documented formulas), for both
+ *     `Tensile plastic flow' values; with `crack' e_zz = -(q + nu T) / E0
+ *     and e_yy = -nu (T - q) / E0 (no lateral plastic strain), with
+ *     `elastic' both less nu p: the opening shortens the point parallel
+ *     to the crack, by more than 5 q / E0 at e_xx = 0.02.
  *
  * The peak of a path is located by restarting from the step before the
  * largest |sigma_y| with 50 times smaller steps, three times.
@@ -453,6 +464,88 @@ main(int argc, char **argv)
                        "unit with `Cracked compression residual ratio = 0.4', "
                        "cracked to eps_1 = 0.003 and 0.03: peak = max(0.4, "
                        "beta) f_c (1e-6)");
+  }
+
+  // (e) `Tensile plastic flow': the crack strain with or without the
+  // lateral Poisson part, against the closed form of the converged state
+  {
+    const double      E = 10e9, nu = 0.15, b_t = 0.1, d_max = 0.95;
+    const double      l = 0.01, G_f = 80; // advance()'s band, the default
+    const double      w      = G_f / (f_t * l) - f_t / (2 * E);
+    const std::string common = "set Tensile plastic strain ratio = 0.1\n"
+                               "set Maximum damage = 0.95\n";
+    // the tensile envelope at envelope strain e: plastic strain p and
+    // effective threshold T = E (e - p) (doc/brickwork.md, `Uniaxial
+    // envelopes')
+    auto envelope = [&](const double e, double &p, double &T) {
+      const double sigma =
+        e <= f_t / E ? E * e : f_t * std::exp(-(e - f_t / E) / w);
+      p              = e <= f_t / E ? 0. : b_t * (e - sigma / E);
+      const double d = e <= f_t / E ? 0. : 1 - sigma / (E * (e - p));
+      if (d > d_max)
+        p = e - sigma / ((1 - d_max) * E);
+      T = E * (e - p);
+      return sigma;
+    };
+    double       worst_axial = 0, worst_lateral = 0, shortening_elastic = 0;
+    unsigned int cracked = 0;
+    for (const std::string flow : {"crack", "elastic"})
+      for (const double q : {0., 4e6})
+        {
+          const auto law =
+            material("damage plasticity",
+                     common + "set Tensile plastic flow = " + flow + "\n");
+          // e_xx to 0.02 (opening a crack normal to x), sigma_yy = 0,
+          // sigma_zz = -q (compression parallel to the crack, below the
+          // elastic limit 0.4 f_c)
+          Control control;
+          control.b0 = -q;
+          PathPoint start;
+          start.state.assign(n_state(*law), 0.);
+          start.strain[2][2] = -q / E;
+          start.strain[1][1] = nu * q / E;
+          const auto path    = advance(*law, control, start, 0.02, 400, 0);
+          AssertThrow(path.size() == 400, ExcMessage("crack path"));
+          for (const auto &pt : path)
+            {
+              const double kappa = state_value(*law, pt.state, "kappa_tension");
+              if (kappa == 0) // not cracked yet
+                continue;
+              ++cracked;
+              double       p, T;
+              const double sigma = envelope(kappa, p, T);
+              // the axial relation: sigma_xx on the envelope, e_xx = p +
+              // (T + nu q) / E
+              worst_axial = std::max(
+                {worst_axial,
+                 std::abs(pt.stress[0][0] - sigma) / f_t,
+                 std::abs(pt.strain[0][0] - p - (T + nu * q) / E) / (f_t / E)});
+              // lateral: elastic strains of the effective stress (T, 0,
+              // -q) plus the lateral plastic part, -nu p (elastic flow)
+              // or none (crack)
+              const double pl  = flow == "crack" ? 0. : -nu * p;
+              const double ezz = pl - (q + nu * T) / E;
+              const double eyy = pl - nu * (T - q) / E;
+              worst_lateral =
+                std::max({worst_lateral,
+                          std::abs(pt.strain[2][2] - ezz) / (f_t / E),
+                          std::abs(pt.strain[1][1] - eyy) / (f_t / E)});
+              if (flow == "elastic" && q > 0 && &pt == &path.back())
+                shortening_elastic = -pt.strain[2][2] / (q / E);
+            }
+        }
+    log() << "tensile plastic flow: axial " << worst_axial << ", lateral "
+          << worst_lateral << " (of f_t / E0); elastic flow at e_xx = 0.02: "
+          << "shortening " << shortening_elastic << " x q / E0, " << cracked
+          << " cracked points\n";
+    vault_tests::check(
+      worst_axial < 1e-6 && worst_lateral < 1e-6 && shortening_elastic > 5 &&
+        cracked > 1000,
+      "`Tensile plastic flow' (b_t = 0.1, d_max = 0.95), crack opened to "
+      "e_xx = 0.02 with sigma_zz = 0 and -4 MPa parallel to it: sigma_xx "
+      "and e_xx on the tension envelope for both flows; `crack': e_zz = "
+      "-(q + nu T) / E0, no shortening from the crack; `elastic': e_zz "
+      "-= nu e_p,xx, more than 5 times q / E0 at 0.02 (1e-6 of f_t / E0)");
   }
 
   // (b) the mortar

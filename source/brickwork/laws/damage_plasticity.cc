@@ -468,6 +468,85 @@ namespace masonry
       p.damage = std::max(p.damage, 0.);
     }
 
+    double
+    DamagePlasticityBrick::crack_return(const double           e_trial,
+                                        const double           kappa_old,
+                                        const double           p_old,
+                                        const double           d_c,
+                                        const double           l,
+                                        const double           phi,
+                                        State                 &updated,
+                                        SymmetricTensor<2, 3> &plus,
+                                        SymmetricTensor<2, 3> &minus,
+                                        double                &tau_t,
+                                        double                &tau_c) const
+    {
+      // the crack strain grows along N, coaxial with the effective stress:
+      // d e_p = (p(e) - p_old) N, so the effective stress moves by -(p(e) -
+      // p_old) C0 : N; the envelope strain e is the root of "tensile
+      // measure of the new effective stress = T(e)" (in uniaxial stress:
+      // the input curve). One crack, N = n1 n1 (Rankine's associated flow,
+      // n1 the direction of the largest principal effective stress s1),
+      // when the second principal value s2 <= nu / (1 - nu) s1: then s1
+      // stays the largest and s2 drops to <= 0 by the time s1 is returned
+      // to 0 (the trial lateral stresses of a point in uniaxial stress are
+      // lambda dp < nu / (1 - nu) s1). Otherwise (multiaxial tension) N =
+      // s+ / tau_t, the positive principal directions together
+      const SymmetricTensor<2, 3> s0  = plus + minus;
+      const auto                  eig = dealii::eigenvectors(s0);
+      const SymmetricTensor<2, 3> N =
+        eig[1].first <= nu / (1 - nu) * eig[0].first ?
+          SymmetricTensor<2, 3>(dealii::symmetrize(
+            dealii::outer_product(eig[0].second, eig[0].second))) :
+          SymmetricTensor<2, 3>(plus / tau_t);
+      const SymmetricTensor<2, 3> G = effective(N);
+      SymmetricTensor<2, 3>       p, m;
+      double                      tt, tc;
+      auto                        excess = [&](const double e) {
+        const EnvelopePoint env = tension(e, l, phi);
+        split(s0 - (env.plastic - p_old) * G, p, m, tt, tc);
+        const double share = interaction_share(tc, tt, d_c, env.damage, phi);
+        return tt / (1 - share) - E * (e - env.plastic);
+      };
+      // the root lies below the envelope strain of the elastic flow, e_trial
+      // (in uniaxial stress; the increment of the largest principal value
+      // per unit plastic strain, lambda + 2 mu, exceeds E0). Under biaxial
+      // tension the second principal value, lowered only by lambda per
+      // unit, may become the largest before the measure is on the
+      // threshold: the flow stops at e_trial (never more plastic strain
+      // than the elastic flow gives) and the next step returns the rest
+      // along that direction
+      double a = std::max(kappa_old, phi * f_t / E), b = std::max(e_trial, a);
+      double fa = excess(a), fb = excess(b);
+      double e = fa <= 0 ? a : b;
+      if (fa > 0 && fb < 0)
+        for (unsigned int it = 0, side = 2; it < 200; ++it)
+          {
+            e              = (a * fb - b * fa) / (fb - fa);
+            const double f = excess(e);
+            if (std::abs(f) <= 1e-13 * phi * f_t || b - a <= 1e-15 * b)
+              break;
+            if (f > 0)
+              {
+                a = e, fa = f;
+                if (side == 0)
+                  fb /= 2;
+                side = 0;
+              }
+            else
+              {
+                b = e, fb = f;
+                if (side == 1)
+                  fa /= 2;
+                side = 1;
+              }
+          }
+      const double dp = tension(e, l, phi).plastic - p_old;
+      updated.plastic_strain += dp * N;
+      split(s0 - dp * G, plus, minus, tau_t, tau_c);
+      return e;
+    }
+
     void
     DamagePlasticityBrick::update(const SymmetricTensor<2, 3> &strain,
                                   const State                 &old,
@@ -534,20 +613,41 @@ namespace masonry
         const double e = p_old + tau / E;
         if (e > old.kappa_t && e > phi * f_t / E && tau_t > 0)
           {
-            const EnvelopePoint env = tension(e, l, phi);
-            const double        T   = E * (e - env.plastic);
-            const double        s =
-              interaction ?
-                       scale_onto(tau_t,
-                           (1 - env.damage) * tau_t / (phi * f_t),
-                           std::min((1 - d_c) * tau_c / (phi * f_c), 0.5),
-                           T) :
-                       T / tau_t;
-            updated.plastic_strain += (1 - s) * compliance(plus);
-            plus *= s;
-            updated.kappa_t     = e;
-            updated.threshold_t = T;
-            d_t                 = env.damage;
+            if (crack_flow)
+              {
+                const double        e_new = crack_return(e,
+                                                  old.kappa_t,
+                                                  p_old,
+                                                  d_c,
+                                                  l,
+                                                  phi,
+                                                  updated,
+                                                  plus,
+                                                  minus,
+                                                  tau_t,
+                                                  tau_c);
+                const EnvelopePoint env   = tension(e_new, l, phi);
+                updated.kappa_t           = e_new;
+                updated.threshold_t       = E * (e_new - env.plastic);
+                d_t                       = env.damage;
+              }
+            else
+              {
+                const EnvelopePoint env = tension(e, l, phi);
+                const double        T   = E * (e - env.plastic);
+                const double        s =
+                  interaction ?
+                           scale_onto(tau_t,
+                               (1 - env.damage) * tau_t / (phi * f_t),
+                               std::min((1 - d_c) * tau_c / (phi * f_c), 0.5),
+                               T) :
+                           T / tau_t;
+                updated.plastic_strain += (1 - s) * compliance(plus);
+                plus *= s;
+                updated.kappa_t     = e;
+                updated.threshold_t = T;
+                d_t                 = env.damage;
+              }
           }
       }
       // viscous regularisation
@@ -593,4 +693,5 @@ MASONRY_REGISTER_BRICK_MATERIAL(
   "eps_1) <= 1 after Vecchio & Collins 1986), `Confinement coefficient' "
   "(Lubliner's "
   "triaxial term), `Compressive softening' = false (perfectly plastic in "
-  "compression).")
+  "compression), `Tensile plastic flow' = crack (the crack strain normal "
+  "to the crack only, without the Poisson part of C0^-1 : s+).")

@@ -174,6 +174,22 @@ namespace masonry
         "(1 - nu). The peak and plateau stay on the envelope; the strain "
         "at which a point reaches them changes.");
       prm.declare_entry(
+        "Tensile plastic flow",
+        "elastic",
+        dealii::Patterns::Selection("elastic|crack"),
+        "Direction of the tensile plastic strain (the part of a crack's "
+        "opening that is plastic: `Tensile plastic strain ratio', and all "
+        "of it once the damage is at `Maximum damage'): `elastic' along "
+        "C0^-1 : s+, as the elastic strain, so that a crack opening eps "
+        "carries a lateral contraction -nu eps in the other two "
+        "directions, which relieves a compression parallel to the crack "
+        "by about E0 nu eps; `crack' along n n, n the direction of the "
+        "largest principal effective stress (Rankine's associated flow, "
+        "no lateral part: the strain of a smeared crack normal to n, an "
+        "opening w over the band l is w / l n n), the envelope strain "
+        "from a scalar root search. Both give the input curve in "
+        "uniaxial stress.");
+      prm.declare_entry(
         "Tension-compression interaction",
         "false",
         Bool(),
@@ -254,6 +270,7 @@ namespace masonry
       k_confinement = prm.get_double("Confinement coefficient");
       c_cracked     = prm.get_double("Cracked compression softening");
       beta_residual = prm.get_double("Cracked compression residual ratio");
+      crack_flow    = prm.get("Tensile plastic flow") == "crack";
       {
         const std::string flow = prm.get("Plastic Poisson's ratio");
         radial_flow            = flow == "elastic";

@@ -52,6 +52,12 @@
  *   envelope strain at the start of the step (Vecchio & Collins 1986,
  *   c = 170: a cracked point peaks at beta f_c in compression), bounded
  *   below by `Cracked compression residual ratio' beta_r;
+ * - `Tensile plastic flow' = crack: the tensile plastic (crack) strain grows
+ *   along n1 n1 (one crack normal to the largest principal effective
+ *   stress; s+ / tau_t under multiaxial tension) instead of C0^-1 : s+,
+ *   with the envelope strain from a scalar root search (crack_return()),
+ *   so that an opening crack no longer carries the Poisson contraction
+ *   -nu eps_1 into the directions parallel to it;
  * - `Plastic Poisson's ratio' nu_p: the compressive plastic strain grows
  *   along C_p^-1 : s- (compliance with E0, nu_p) instead of C0^-1 : s-,
  *   with the multiplier from a scalar root search (flow()); a confined
@@ -286,6 +292,36 @@ namespace masonry
            double                &tau_t,
            double                &tau_c) const;
 
+      /**
+       * The tensile return with `Tensile plastic flow' = crack: the plastic
+       * (crack) strain grows along N = n1 n1, n1 the direction of the
+       * largest principal effective stress (Rankine's associated flow, no
+       * lateral part), by p(e) - @p p_old (p the tensile
+       * envelope's plastic strain), so that the effective stress moves by
+       * -(p(e) - p_old) C0 : N; e, returned, is the root of "tensile
+       * measure (with the interaction, at the new tensile damage and the
+       * compressive damage @p d_c) = T(e) = E0 (e - p(e))" above
+       * max(@p kappa_old, f_t / E0) (false position, Illinois). In
+       * uniaxial stress this is the input curve, as with the elastic
+       * flow; under lateral compression the crack opening no longer
+       * carries the Poisson contraction -nu of C0^-1 : s+ into the other
+       * directions, which relieved the compression parallel to the crack
+       * by E0 nu times the opening strain. On return @p plus, @p minus,
+       * @p tau_t and @p tau_c are those of the new effective stress.
+       */
+      double
+      crack_return(const double           e_trial,
+                   const double           kappa_old,
+                   const double           p_old,
+                   const double           d_c,
+                   const double           l,
+                   const double           phi,
+                   State                 &updated,
+                   SymmetricTensor<2, 3> &plus,
+                   SymmetricTensor<2, 3> &minus,
+                   double                &tau_t,
+                   double                &tau_c) const;
+
       /** C0 : e. */
       SymmetricTensor<2, 3>
       effective(const SymmetricTensor<2, 3> &e) const;
@@ -396,8 +432,10 @@ namespace masonry
       /** `Compressive softening', `Tension-compression interaction'. */
       bool softening = true, interaction = false;
       /** `Plastic Poisson's ratio': elastic (radial) or nu_p. */
-      bool   radial_flow = true;
-      double nu_p        = 0.15;
+      bool radial_flow = true;
+      /** `Tensile plastic flow' = crack. */
+      bool   crack_flow = false;
+      double nu_p       = 0.15;
       /** `Confinement coefficient' and Lubliner's gamma from it. */
       double k_confinement = 0, gamma = 0;
       /** The initial stiffness. */
