@@ -115,6 +115,19 @@ namespace masonry
           "and height of a unit are about its size / the enlarged mesh "
           "spacing; mortar layers are one cell thick. Not with `Mesh "
           "distortion'.");
+        prm.declare_entry(
+          "Collar bed gap",
+          "0",
+          Double(),
+          "Width of the unfilled strip of every bed joint on each side of "
+          "every collar joint, m (`Model = detailed' only, >= 0): the "
+          "bed-joint mortar in the plane of a collar joint, widened by this "
+          "on both sides, is a void (no cells; the unit faces above and "
+          "below it are free), as where the mortar beds of the wythes are "
+          "spread separately and do not meet. A workmanship input, as a "
+          "dismantled specimen shows it; no effect on a wall without collar "
+          "joints. The plan area of the voids (`bed_void_area', m^2, summed "
+          "over the bed joints) is in log.txt and summary.json.");
         for (const char *joint : {"Head", "Collar"})
           prm.declare_entry(
             std::string(joint) + " joint fill",
@@ -583,6 +596,11 @@ namespace masonry
             (entry[0] == 'H' ? s.mesh.head_joint_fill :
                                s.mesh.collar_joint_fill) = f;
           }
+        s.mesh.collar_bed_gap = prm.get_double("Collar bed gap");
+        AssertThrow(s.mesh.collar_bed_gap >= 0,
+                    ExcParameter("Collar bed gap", "must not be negative"));
+        AssertThrow(s.mesh.collar_bed_gap == 0 || s.mesh.detailed,
+                    ExcParameter("Collar bed gap", "needs `Model = detailed'"));
         AssertThrow(!s.mesh.detailed || s.mesh.distortion == 0,
                     ExcParameter("Mesh distortion",
                                  "is not supported with `Model = detailed'"));

@@ -84,6 +84,14 @@ namespace masonry
        * as collar joint. 1: full joints.
        */
       double head_joint_fill = 1, collar_joint_fill = 1;
+      /**
+       * Width of the unfilled strip of every bed joint on each side of a
+       * collar joint (detailed model; `Collar bed gap'), m: the bed-joint
+       * mortar under and over the collar plane, widened by this on both
+       * sides, is a void (the beds of the wythes spread separately and not
+       * joined). 0: full bed joints.
+       */
+      double collar_bed_gap = 0;
     };
 
     /** The platens and the gauge (`Platen ...', `Gauge length'). */

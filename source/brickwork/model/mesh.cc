@@ -171,6 +171,30 @@ namespace masonry
           for (const double f : fills)
             if (f > 0 && f < 1)
               lines[2].push_back(p.lower[2] + f * (p.upper[2] - p.lower[2]));
+        // the collar planes: a mortar layer h_m thick in y between units on
+        // both sides (one wythe's unit ends at y = a, the next one's starts
+        // at a + h_m); with a bed gap g the bed joints are void over
+        // [a - g, a + h_m + g], and grid lines lie at its ends
+        std::vector<std::pair<double, double>> bed_gaps;
+        if (settings.collar_bed_gap > 0)
+          {
+            std::vector<double> ends;
+            for (const Piece &p : pieces)
+              for (const Piece &q : pieces)
+                if (std::abs(q.lower[1] - p.upper[1] - hm) < tol &&
+                    std::none_of(ends.begin(), ends.end(), [&](double e) {
+                      return std::abs(e - p.upper[1]) < tol;
+                    }))
+                  ends.push_back(p.upper[1]);
+            for (const double a : ends)
+              {
+                bed_gaps.emplace_back(
+                  std::max(0., a - settings.collar_bed_gap),
+                  std::min(extent[1], a + hm + settings.collar_bed_gap));
+                lines[1].push_back(bed_gaps.back().first);
+                lines[1].push_back(bed_gaps.back().second);
+              }
+          }
         // the grid: the lines through every face, each interval divided
         // at about the mesh spacing (mortar intervals, h_m, in one cell)
         std::vector<double> grid[3];
@@ -269,7 +293,16 @@ namespace masonry
                   (head ? g.head_void_area : g.collar_void_area) += area;
                 return gone;
               }
-          return false; // a bed joint
+          // a bed joint: void in the strips along the collar joints
+          const double yc = 0.5 * (grid[1][j] + grid[1][j + 1]);
+          for (const auto &[a, b] : bed_gaps)
+            if (yc > a && yc < b)
+              {
+                g.bed_void_area +=
+                  (grid[0][i + 1] - grid[0][i]) * (grid[1][j + 1] - grid[1][j]);
+                return true;
+              }
+          return false;
         };
         // one vertex per grid point and owner (all owners one, bonded)
         std::map<std::array<unsigned int, 4>, unsigned int> vertex_of;

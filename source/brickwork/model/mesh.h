@@ -34,6 +34,12 @@ namespace masonry
          */
         double head_joint_area = 0, head_void_area = 0;
         double collar_joint_area = 0, collar_void_area = 0;
+        /**
+         * Plan area of the unfilled strips of the bed joints along the
+         * collar joints (MeshSettings::collar_bed_gap), summed over the bed
+         * joints, m^2.
+         */
+        double bed_void_area = 0;
         /** Void (omitted) mortar cells. */
         unsigned int n_void_cells = 0;
       };

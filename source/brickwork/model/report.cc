@@ -81,6 +81,12 @@ namespace masonry
                       << geometry.head_joint_area << " m^2, collar joints "
                       << geometry.collar_void_area << " of "
                       << geometry.collar_joint_area << " m^2\n";
+                summary["collar_bed_gap"] = settings.mesh.collar_bed_gap;
+                summary["bed_void_area"]  = geometry.bed_void_area;
+                if (geometry.bed_void_area > 0)
+                  pcout << "Unfilled bed joints along the collar joints: "
+                        << geometry.bed_void_area << " m^2 in plan (gap "
+                        << settings.mesh.collar_bed_gap << " m on each side)\n";
               }
           }
         if (splitting_law)
