@@ -21,6 +21,49 @@ namespace masonry
       /** Number of doubles of a State. */
       constexpr unsigned int n_state = 12;
 
+      /**
+       * Root of @p f in [a, b] with f(a) = fa > 0 > f(b) = fb by false
+       * position with the Illinois modification (the retained end's value
+       * halved when the same end moves twice in a row): stops once |f| <=
+       * @p f_tol, the bracket is narrower than @p x_rel_tol b, or after
+       * @p max_it evaluations; returns the last iterate.
+       */
+      template <typename F>
+      double
+      illinois_root(const F           &f,
+                    double             a,
+                    double             b,
+                    double             fa,
+                    double             fb,
+                    const double       f_tol,
+                    const double       x_rel_tol,
+                    const unsigned int max_it)
+      {
+        double x = b;
+        for (unsigned int it = 0, side = 2; it < max_it; ++it)
+          {
+            x              = (a * fb - b * fa) / (fb - fa);
+            const double y = f(x);
+            if (std::abs(y) <= f_tol || b - a <= x_rel_tol * b)
+              break;
+            if (y > 0)
+              {
+                a = x, fa = y;
+                if (side == 0)
+                  fb /= 2;
+                side = 0;
+              }
+            else
+              {
+                b = x, fb = y;
+                if (side == 1)
+                  fa /= 2;
+                side = 1;
+              }
+          }
+        return x;
+      }
+
       State
       unpack(ConstStateView v)
       {
@@ -254,27 +297,7 @@ namespace masonry
       // threshold out of reach along the flow: as far as it goes
       double lambda = fa <= 0 ? 0. : b;
       if (fa > 0 && fb < 0)
-        for (unsigned int it = 0, side = 2; it < 100; ++it)
-          {
-            lambda         = (a * fb - b * fa) / (fb - fa);
-            const double f = excess(lambda);
-            if (std::abs(f) <= 1e-12 * T)
-              break;
-            if (f > 0)
-              {
-                a = lambda, fa = f;
-                if (side == 0)
-                  fb /= 2;
-                side = 0;
-              }
-            else
-              {
-                b = lambda, fb = f;
-                if (side == 1)
-                  fa /= 2;
-                side = 1;
-              }
-          }
+        lambda = illinois_root(excess, a, b, fa, fb, 1e-12 * T, 0., 100);
       updated.plastic_strain +=
         lambda * ((1 + nu_p) / E * minus - nu_p / E * dealii::trace(minus) * I);
       split(s0 - lambda * G, plus, minus, tau_t, tau_c);
@@ -520,27 +543,7 @@ namespace masonry
       double fa = excess(a), fb = excess(b);
       double e = fa <= 0 ? a : b;
       if (fa > 0 && fb < 0)
-        for (unsigned int it = 0, side = 2; it < 200; ++it)
-          {
-            e              = (a * fb - b * fa) / (fb - fa);
-            const double f = excess(e);
-            if (std::abs(f) <= 1e-13 * phi * f_t || b - a <= 1e-15 * b)
-              break;
-            if (f > 0)
-              {
-                a = e, fa = f;
-                if (side == 0)
-                  fb /= 2;
-                side = 0;
-              }
-            else
-              {
-                b = e, fb = f;
-                if (side == 1)
-                  fa /= 2;
-                side = 1;
-              }
-          }
+        e = illinois_root(excess, a, b, fa, fb, 1e-13 * phi * f_t, 1e-15, 200);
       const double dp = tension(e, l, phi).plastic - p_old;
       updated.plastic_strain += dp * N;
       split(s0 - dp * G, plus, minus, tau_t, tau_c);
