@@ -34,48 +34,13 @@ namespace
        const unsigned int courses,
        const double       gap)
   {
-    std::ostringstream w;
-    w << "  set Model = detailed\n"
-         "  set Brick length = 0.215\n"
-         "  set Brick width = 0.1025\n"
-         "  set Brick height = 0.065\n"
-         "  set Joint thickness = 0.010\n"
-         "  set Courses = "
-      << courses
-      << "\n"
-         "  set Length in bricks = 2\n"
-         "  set Elements along the length = 2\n"
-         "  set Elements along the width = 1\n"
-         "  set Elements along the height = 1\n"
-         "  set Platen lateral restraint = free\n"
-         "  set Target strain = 1e-4\n"
-         "  set Number of steps = 1\n"
-         "  set Collar bed gap = "
-      << gap << "\n";
-    std::ostringstream p;
-    p << "subsection Bond\n  set Pattern = " << bond
-      << "\n  subsection English\n    set Thickness = " << thickness
-      << "\n  end\nend\n"
-         "subsection Brick material\n"
-         "  set Model = elastic\n"
-         "  subsection Elastic\n"
-         "    set Young's modulus = 10e9\n"
-         "    set Poisson's ratio = 0.2\n"
-         "  end\n"
-         "end\n"
-         "subsection Mortar material\n"
-         "  set Model = elastic\n"
-         "  subsection Elastic\n"
-         "    set Young's modulus = 1e9\n"
-         "    set Poisson's ratio = 0.2\n"
-         "  end\n"
-         "end\n"
-         "subsection Interface law\n"
-         "  set Law = elastic\n"
-         "  set Normal stiffness = 1e14\n"
-         "  set Shear stiffness = 1e14\n"
-         "end\n";
-    return prm(w.str(), p.str());
+    std::ostringstream gap_entry;
+    gap_entry << "  set Collar bed gap = " << gap << "\n";
+    return prm(coarse_detailed_wall(courses, gap_entry.str()),
+               "subsection Bond\n  set Pattern = " + bond +
+                 "\n  subsection English\n    set Thickness = " + thickness +
+                 "\n  end\nend\n" + elastic_units_and_mortar("0.2") +
+                 elastic_bond);
   }
 } // namespace
 

@@ -176,32 +176,14 @@ namespace
          "  set Number of steps = 2\n"
       << (vtu ? "  set Write VTU = true\n" : "");
     return prm(s.str(),
-               "subsection Bond\n  set Pattern = stack\nend\n"
-               "subsection Brick material\n"
-               "  set Model = elastic\n"
-               "  subsection Elastic\n"
-               "    set Young's modulus = 10e9\n"
-               "    set Poisson's ratio = 0.15\n"
-               "  end\n"
-               "end\n"
-               "subsection Mortar material\n"
-               "  set Model = elastic\n"
-               "  subsection Elastic\n"
-               "    set Young's modulus = 1e9\n"
-               "    set Poisson's ratio = 0.2\n"
-               "  end\n"
-               "end\n"
-               "subsection Interface law\n"
-               "  set Law = elastic\n"
-               "  set Normal stiffness = 1e14\n"
-               "  set Shear stiffness = 1e14\n"
-               "end\n"
-               "subsection Postprocess\n"
-               "  subsection Wallette\n"
-               "    set List of postprocessors = curve tables, fields, "
-               "centre stress\n"
-               "  end\n"
-               "end\n");
+               "subsection Bond\n  set Pattern = stack\nend\n" +
+                 elastic_units_and_mortar("0.15") + elastic_bond +
+                 "subsection Postprocess\n"
+                 "  subsection Wallette\n"
+                 "    set List of postprocessors = curve tables, fields, "
+                 "centre stress\n"
+                 "  end\n"
+                 "end\n");
   }
   /** The wide prism of the peak checks: @p cells x @p cells in plan. */
   std::string

@@ -38,6 +38,66 @@ namespace brickwork_tests
   }
 
   /**
+   * The Wallette entries of the detailed model's coarse elastic wall of the
+   * joint-geometry tests (brickwork_joint_fill, brickwork_collar_bed_gap):
+   * 215 x 102.5 x 65 mm units, 10 mm joints, @p courses courses of 2
+   * bricks, 2 x 1 x 1 cells per unit, free platens, one step to strain
+   * 1e-4; @p extra: further Wallette entries.
+   */
+  inline std::string
+  coarse_detailed_wall(const unsigned int courses, const std::string &extra)
+  {
+    return "  set Model = detailed\n"
+           "  set Brick length = 0.215\n"
+           "  set Brick width = 0.1025\n"
+           "  set Brick height = 0.065\n"
+           "  set Joint thickness = 0.010\n"
+           "  set Courses = " +
+           std::to_string(courses) +
+           "\n"
+           "  set Length in bricks = 2\n"
+           "  set Elements along the length = 2\n"
+           "  set Elements along the width = 1\n"
+           "  set Elements along the height = 1\n"
+           "  set Platen lateral restraint = free\n"
+           "  set Target strain = 1e-4\n"
+           "  set Number of steps = 1\n" +
+           extra;
+  }
+
+  /**
+   * Elastic units (E = 10 GPa, Poisson's ratio @p nu_b) and elastic mortar
+   * (E = 1 GPa, 0.2) of the detailed model's elastic tests.
+   */
+  inline std::string
+  elastic_units_and_mortar(const std::string &nu_b)
+  {
+    return "subsection Brick material\n"
+           "  set Model = elastic\n"
+           "  subsection Elastic\n"
+           "    set Young's modulus = 10e9\n"
+           "    set Poisson's ratio = " +
+           nu_b +
+           "\n"
+           "  end\n"
+           "end\n"
+           "subsection Mortar material\n"
+           "  set Model = elastic\n"
+           "  subsection Elastic\n"
+           "    set Young's modulus = 1e9\n"
+           "    set Poisson's ratio = 0.2\n"
+           "  end\n"
+           "end\n";
+  }
+
+  /** Elastic bond interfaces with stiff contact penalties (1e14 Pa/m). */
+  inline const std::string elastic_bond = "subsection Interface law\n"
+                                          "  set Law = elastic\n"
+                                          "  set Normal stiffness = 1e14\n"
+                                          "  set Shear stiffness = 1e14\n"
+                                          "end\n";
+
+  /**
    * The coarse cracked wallette of the solver tests (brickwork_solver_fallback,
    * brickwork_solver_speed): 7 courses of 2 stretchers, 2 x 1 x 1 cells per
    * brick between laterally fixed platens, damage-plasticity bricks,
