@@ -530,22 +530,12 @@ namespace masonry
                        solved.isProvenPrimalInfeasible() ?
                      DualRoute::dual_infeasible :
                      DualRoute::failed;
-          // a vertex that is optimal only for Clp's scaled dual LP
-          // (secondary status: the unscaled one has primal or dual
-          // infeasibilities) maps back to a basis with as many
-          // infeasibilities in the LP, from which the clean-up below
-          // wandered: on the barrel corner settlement at 24 x 32 blocks per
-          // half (20 of each) for more than 200 CPU s. One pass of the
-          // primal simplex on the unscaled dual LP (187 iterations, 1.8 s
-          // there) makes the restored basis optimal to the unscaled
-          // tolerances, and the clean-up is then made without scaling too
-          // (6 iterations; SciPy's HiGHS agrees to 2e-9,
-          // contrib/benchmarks/lp_solvers/results-2026-11-24h.md)
-          // Only after the barrier: the primal simplex on the dual LP (no
-          // tension no sliding) also ends with secondary status 2, but the
-          // restored basis needs 3 pivots, and the polish and an unscaled
-          // clean-up took 17 CPU s more on Bothwell at 18 x 24 blocks per
-          // half (4.2 CPU s without).
+          // after the barrier, a vertex optimal only for Clp's scaled dual
+          // LP (secondary status) maps back to a basis the clean-up wanders
+          // from (barrel corner, 24 x 32 per half: > 200 CPU s); a primal
+          // pass on the unscaled dual LP and an unscaled clean-up fix it
+          // (contrib/benchmarks/lp_solvers/results-2026-11-24h.md, also why
+          // not after the primal simplex)
           const bool unscaled =
             method == "barrier" && solved.secondaryStatus() != 0;
           if (unscaled)
@@ -561,10 +551,8 @@ namespace masonry
           static_cast<ClpSimplexOther &>(model).restoreFromDual(dual.get());
           if (unscaled)
             model.scaling(0);
-          // a safeguard: a clean-up from a basis near the optimum takes a
-          // few hundred pivots at most (measured: 0 to 9 by the dual
-          // simplex, 323 + 179 by the primal one on 55008 rows); beyond
-          // the cap the LP is solved directly
+          // safeguard: clean-ups took at most 323 + 179 pivots (55008 rows);
+          // past the cap the LP is solved directly
           model.setMaximumIterations(1000 + model.numberRows() / 20);
           // clean up from the restored basis: a vertex of the original
           // problem. The basis is the dual LP's optimal one, so it is dual
