@@ -21,6 +21,10 @@ namespace masonry
       /** Number of doubles of a State. */
       constexpr unsigned int n_state = 12;
 
+      /** Largest number of compressive and tensile returns in turn in one
+       * update with `Tensile plastic flow' = crack (see update()). */
+      constexpr unsigned int max_passes = 20;
+
       /**
        * Root of @p f in [a, b] with f(a) = fa > 0 > f(b) = fb by false
        * position with the Illinois modification (the retained end's value
@@ -566,93 +570,117 @@ namespace masonry
       double d_t = old.kappa_t > 0 ? tension(old.kappa_t, l, phi).damage : 0.;
       double d_c =
         old.kappa_c > 0 ? compression(old.kappa_c, l, phi).damage : 0.;
-      // compression: the envelope strain this trial state corresponds to;
-      // a cracked point reaches its threshold at beta T (beta of the
-      // tensile envelope strain at the start of the step)
-      {
-        const double beta = cracked_compression_factor(old.kappa_t);
-        const double m    = interaction_share(tau_c, tau_t, d_c, d_t, phi);
-        const double tau  = tau_c / ((1 - m) * beta);
-        const double p_old =
-          old.kappa_c > 0 ? compression(old.kappa_c, l, phi).plastic : 0.;
-        const double e = p_old + tau / E;
-        if (e > old.kappa_c && e > ratio * phi * f_c / E && tau_c > 0)
+      // the two returns in turn: compression, then tension. The crack flow
+      // (n1 n1 or s+ / tau_t) also moves the other principal values, by
+      // -lambda dp each, so it can push s- back outside the compressive
+      // envelope just returned to (the elastic flow, along C0^-1 : s+,
+      // moves s+ only); a compressive flow with nu_p != nu (flow()) moves
+      // s+ in turn. So with `crack' both returns are repeated, from the
+      // envelope strains reached, until neither acts. Left as it was, the
+      // excess lambda dp (1 - d_c) of every step stayed in the returned
+      // stress: a cell fully softened in compression (T_c = 0) whose crack
+      // kept opening carried it, and in the walls of the study sweep such
+      // cells ran away (contrib/study/results-2026-11-25)
+      const double beta = cracked_compression_factor(old.kappa_t);
+      for (unsigned int pass = 0; pass < max_passes; ++pass)
+        {
+          bool cracked = false, crushed = false;
           {
-            const EnvelopePoint env = compression(e, l, phi);
-            const double        T   = E * (e - env.plastic);
-            const double        s =
-              interaction ?
-                       scale_onto(tau_c,
-                           (1 - env.damage) * tau_c / (phi * f_c),
-                           std::min((1 - d_t) * tau_t / (phi * f_t), 0.5),
-                           beta * T) :
-                       beta * T / tau_c;
-            if (radial_flow)
+            const double m   = interaction_share(tau_c, tau_t, d_c, d_t, phi);
+            const double tau = tau_c / ((1 - m) * beta);
+            const double p_old =
+              updated.kappa_c > 0 ?
+                compression(updated.kappa_c, l, phi).plastic :
+                0.;
+            const double e = p_old + tau / E;
+            if (e > updated.kappa_c && e > ratio * phi * f_c / E && tau_c > 0)
               {
-                updated.plastic_strain += (1 - s) * compliance(minus);
-                minus *= s;
-                tau_c *= s;
-              }
-            else
-              flow(minus,
-                   1 - env.damage,
-                   d_t,
-                   phi,
-                   beta * T,
-                   updated,
-                   plus,
-                   tau_t,
-                   tau_c);
-            updated.kappa_c     = e;
-            updated.threshold_c = T;
-            d_c                 = env.damage;
-          }
-      }
-      {
-        const double m   = interaction_share(tau_c, tau_t, d_c, d_t, phi);
-        const double tau = tau_t / (1 - m);
-        const double p_old =
-          old.kappa_t > 0 ? tension(old.kappa_t, l, phi).plastic : 0.;
-        const double e = p_old + tau / E;
-        if (e > old.kappa_t && e > phi * f_t / E && tau_t > 0)
-          {
-            if (crack_flow)
-              {
-                const double        e_new = crack_return(e,
-                                                  old.kappa_t,
-                                                  p_old,
-                                                  d_c,
-                                                  l,
-                                                  phi,
-                                                  updated,
-                                                  plus,
-                                                  minus,
-                                                  tau_t,
-                                                  tau_c);
-                const EnvelopePoint env   = tension(e_new, l, phi);
-                updated.kappa_t           = e_new;
-                updated.threshold_t       = E * (e_new - env.plastic);
-                d_t                       = env.damage;
-              }
-            else
-              {
-                const EnvelopePoint env = tension(e, l, phi);
+                const EnvelopePoint env = compression(e, l, phi);
                 const double        T   = E * (e - env.plastic);
                 const double        s =
                   interaction ?
-                           scale_onto(tau_t,
-                               (1 - env.damage) * tau_t / (phi * f_t),
-                               std::min((1 - d_c) * tau_c / (phi * f_c), 0.5),
-                               T) :
-                           T / tau_t;
-                updated.plastic_strain += (1 - s) * compliance(plus);
-                plus *= s;
-                updated.kappa_t     = e;
-                updated.threshold_t = T;
-                d_t                 = env.damage;
+                           scale_onto(tau_c,
+                               (1 - env.damage) * tau_c / (phi * f_c),
+                               std::min((1 - d_t) * tau_t / (phi * f_t), 0.5),
+                               beta * T) :
+                           beta * T / tau_c;
+                if (radial_flow)
+                  {
+                    updated.plastic_strain += (1 - s) * compliance(minus);
+                    minus *= s;
+                    tau_c *= s;
+                  }
+                else
+                  flow(minus,
+                       1 - env.damage,
+                       d_t,
+                       phi,
+                       beta * T,
+                       updated,
+                       plus,
+                       tau_t,
+                       tau_c);
+                updated.kappa_c     = e;
+                updated.threshold_c = T;
+                d_c                 = env.damage;
+                crushed             = true;
               }
           }
-      }
+          // after a crack return the tensile state moves only with a
+          // compressive one (round-off aside)
+          if (pass > 0 && !crushed)
+            break;
+          {
+            const double m     = interaction_share(tau_c, tau_t, d_c, d_t, phi);
+            const double tau   = tau_t / (1 - m);
+            const double p_old = updated.kappa_t > 0 ?
+                                   tension(updated.kappa_t, l, phi).plastic :
+                                   0.;
+            const double e     = p_old + tau / E;
+            if (e > updated.kappa_t && e > phi * f_t / E && tau_t > 0)
+              {
+                if (crack_flow)
+                  {
+                    const double        e_new = crack_return(e,
+                                                      updated.kappa_t,
+                                                      p_old,
+                                                      d_c,
+                                                      l,
+                                                      phi,
+                                                      updated,
+                                                      plus,
+                                                      minus,
+                                                      tau_t,
+                                                      tau_c);
+                    const EnvelopePoint env   = tension(e_new, l, phi);
+                    cracked                   = e_new > updated.kappa_t;
+                    updated.kappa_t           = e_new;
+                    updated.threshold_t       = E * (e_new - env.plastic);
+                    d_t                       = env.damage;
+                  }
+                else
+                  {
+                    const EnvelopePoint env = tension(e, l, phi);
+                    const double        T   = E * (e - env.plastic);
+                    const double        s =
+                      interaction ?
+                               scale_onto(tau_t,
+                                   (1 - env.damage) * tau_t / (phi * f_t),
+                                   std::min((1 - d_c) * tau_c / (phi * f_c),
+                                            0.5),
+                                   T) :
+                               T / tau_t;
+                    updated.plastic_strain += (1 - s) * compliance(plus);
+                    plus *= s;
+                    updated.kappa_t     = e;
+                    updated.threshold_t = T;
+                    d_t                 = env.damage;
+                  }
+              }
+          }
+          if (!cracked)
+            break;
+        }
       // viscous regularisation
       const double a =
         mu_visc > 0 && point.time_step > 0 ? mu_visc / point.time_step : 0.;

@@ -57,7 +57,12 @@
  *   stress; s+ / tau_t under multiaxial tension) instead of C0^-1 : s+,
  *   with the envelope strain from a scalar root search (crack_return()),
  *   so that an opening crack no longer carries the Poisson contraction
- *   -nu eps_1 into the directions parallel to it;
+ *   -nu eps_1 into the directions parallel to it. That flow also lowers
+ *   the other principal effective stresses (by lambda per unit crack
+ *   strain), which can push s- outside the compressive envelope just
+ *   returned to; the compressive and tensile returns are then repeated,
+ *   from the envelope strains reached, until neither acts (at most 20
+ *   passes), so that the returned state is inside both envelopes;
  * - `Plastic Poisson's ratio' nu_p: the compressive plastic strain grows
  *   along C_p^-1 : s- (compliance with E0, nu_p) instead of C0^-1 : s-,
  *   with the multiplier from a scalar root search (flow()); a confined
