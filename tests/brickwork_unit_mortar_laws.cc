@@ -58,8 +58,13 @@
  *     tension envelope at the point's envelope strains (computed here from
  *     the documented formulas). The crack flow lowers sigma_yy by lambda
  *     per unit crack strain; returned before the compression, that excess
- *     stayed (0.5 % of f_c above the envelope for the unit) and made the
- *     walls of the study sweep run away.
+ *     stayed (0.5 % of f_c above the envelope for the unit). And a unit
+ *     crack opened by e_xx to 0.05 under sigma_yy = sigma_zz = -1 MPa with
+ *     G_f = 10 J/m^2 (T(e) ~ 0 past e ~ 0.01): on every opening step 0 <=
+ *     sigma_xx <= the envelope (+ the 1e-3 f_t blending of the positive
+ *     part); with the measure clipped at 0 the crack return overshot and
+ *     left 0.03 f_t of compression across the opening crack. Both defects
+ *     made the walls of the study sweep run away.
  *
  * The peak of a path is located by restarting from the step before the
  * largest |sigma_y| with 50 times smaller steps, three times.
@@ -562,11 +567,9 @@ main(int argc, char **argv)
   // returned state on or inside both envelopes at every step
   {
     const double l = 0.01; // advance()'s band
-    // the uniaxial envelopes at envelope strain e (doc/brickwork.md,
-    // `Uniaxial envelopes'): compression linear to f0 = 0.4 f, CEB-FIP
-    // hardening to f at eps_c, then f exp(-(e - eps_c) f l / G_c) (or f
-    // without softening); tension linear to f_t, then f_t exp(-(e -
-    // f_t/E) / w), w = G_f / (f_t l) - f_t / (2 E)
+    // the envelopes at envelope strain e (doc/brickwork.md): compression
+    // to f0 = 0.4 f, CEB-FIP to f at eps_c, f exp(-(e - eps_c) f l / G_c);
+    // tension to f_t, f_t exp(-(e - f_t/E) / w), w = G_f/(f_t l) - f_t/(2E)
     auto compression = [&](const double e,
                            const double E,
                            const double f,
@@ -595,24 +598,14 @@ main(int argc, char **argv)
     const std::string crack = "set Tensile plastic flow = crack\n"
                               "set Tensile plastic strain ratio = 0.1\n"
                               "set Maximum damage = 0.95\n";
-    // unit (radial compressive flow) and mortar (isochoric flow, no
-    // compressive softening): uniaxial compression in y past the peak
-    // strain to y1, then e_xx opened to x2 while e_yy goes on to y2
-    // (sigma_zz = 0)
-    const Case cases[] = {
-      {"damage plasticity",
-       crack,
-       10e9,
-       f_c,
-       eps_c,
-       20000,
-       f_t,
-       80,
-       -0.006,
-       0.01,
-       -0.012},
-      {"mortar", crack, 1e9, 5e6, 0.01, 0, 0.5e6, 10, -0.012, 0.015, -0.02}};
-    double       worst_c = 0, worst_t = 0;
+    // unit (radial compressive flow), mortar (isochoric, no softening):
+    // uniaxial compression in y past the peak to y1, then e_xx opened to
+    // x2 while e_yy goes on to y2 (sigma_zz = 0)
+    const std::string dp      = "damage plasticity";
+    const Case        cases[] = {
+             {dp, crack, 10e9, f_c, eps_c, 2e4, f_t, 80, -6e-3, 0.01, -0.012},
+             {"mortar", crack, 1e9, 5e6, 0.01, 0, 0.5e6, 10, -0.012, 0.015, -0.02}};
+    double       worst_c = 0, worst_t = 0, worst_open = 0, worst_far = 0;
     unsigned int both = 1000;
     for (const Case &c : cases)
       {
@@ -662,6 +655,9 @@ main(int argc, char **argv)
                          (stress[0][0] - tension(kt, c.E, c.ft, c.G_f)) / c.ft);
             if (kc > kc_old && kt > kt_old)
               ++both_here;
+            // an opening crack carries no compression across it
+            if (kt > kt_old)
+              worst_open = std::max(worst_open, -stress[0][0] / c.ft);
             current.strain = strain;
             current.stress = stress;
             current.state  = updated;
@@ -673,16 +669,52 @@ main(int argc, char **argv)
               << current.stress[0][0] << ", sigma_yy " << current.stress[1][1]
               << "\n";
       }
+    // a crack opened far past its softening (G_f = 10 J/m^2: T(e) ~ 1e-30
+    // f_t at e_xx = 0.05) under sigma_yy = sigma_zz = -1 MPa: sigma_xx on
+    // the tension envelope, never a compression across the crack
+    {
+      const auto law = material("damage plasticity",
+                                crack + "set Tensile fracture energy = 10\n");
+      Control    control;
+      control.a0 = control.b0 = -1e6;
+      PathPoint start;
+      start.state.assign(n_state(*law), 0.);
+      const auto path = advance(*law, control, start, 0.05, 500, 0);
+      AssertThrow(path.size() == 500, ExcMessage("far crack path"));
+      double kt_old = 0;
+      for (const auto &pt : path)
+        {
+          const double kt = state_value(*law, pt.state, "kappa_tension");
+          if (kt > kt_old)
+            {
+              worst_open = std::max(worst_open, -pt.stress[0][0] / f_t);
+              // (plus the blending of the positive part over its first
+              // 1e-3 f_t, where T(e) has fallen below it)
+              worst_far =
+                std::max(worst_far,
+                         (pt.stress[0][0] - tension(kt, 10e9, f_t, 10)) / f_t -
+                           1e-3);
+            }
+          kt_old = kt;
+        }
+      log() << "far crack: end sigma_xx " << path.back().stress[0][0]
+            << ", kappa_t " << kt_old << "\n";
+    }
     log() << "crack flow with compression: above the compression envelope by "
           << worst_c << " of f_c, above the tension envelope by " << worst_t
-          << " of f_t\n";
+          << " of f_t, compression across an opening crack " << worst_open
+          << " of f_t, far crack above the envelope + 1e-3 f_t by " << worst_far
+          << "\n";
     vault_tests::check(
-      worst_c < 1e-8 && worst_t < 1e-8 && both > 100,
+      worst_c < 1e-8 && worst_t < 1e-8 && worst_open < 1e-8 &&
+        worst_far < 1e-8 && both > 100,
       "`Tensile plastic flow = crack', a crack opened across a compression "
       "that goes on past its peak (unit to e_xx = 0.01, e_yy = -0.012; mortar "
       "to 0.015, -0.02; sigma_zz = 0): at every step -sigma_yy <= the "
       "compression envelope and sigma_xx <= the tension envelope at the "
-      "point's envelope strains (1e-8)");
+      "point's envelope strains; a unit crack opened to e_xx = 0.05, far "
+      "past its softening, under sigma_yy = sigma_zz = -1 MPa: 0 <= sigma_xx "
+      "<= the envelope + 1e-3 f_t (the blending) (1e-8)");
   }
 
   // (b) the mortar

@@ -529,11 +529,21 @@ namespace masonry
       const SymmetricTensor<2, 3> G = effective(N);
       SymmetricTensor<2, 3>       p, m;
       double                      tt, tc;
-      auto                        excess = [&](const double e) {
-        const EnvelopePoint env = tension(e, l, phi);
-        split(s0 - (env.plastic - p_old) * G, p, m, tt, tc);
+      // the measure is the largest principal value itself, also where it
+      // is negative (tau_t = 0): with the envelope softened to T(e) ~ 0 the
+      // clipped measure made "excess" ~ 0 on the whole stretch past the
+      // root, the search took its upper end e_trial and the crack opened
+      // beyond the strain that relieves s1 (by (lambda + 2 mu) / E0 - 1 of
+      // it and more with the interaction), leaving a compression across
+      // the opening crack that grew step by step (the runaway of the study
+      // sweep, contrib/study/results-2026-11-25)
+      auto excess = [&](const double e) {
+        const EnvelopePoint         env = tension(e, l, phi);
+        const SymmetricTensor<2, 3> s   = s0 - (env.plastic - p_old) * G;
+        split(s, p, m, tt, tc);
         const double share = interaction_share(tc, tt, d_c, env.damage, phi);
-        return tt / (1 - share) - E * (e - env.plastic);
+        const double s1    = tt > 0 ? tt : dealii::eigenvalues(s)[0];
+        return s1 / (1 - share) - E * (e - env.plastic);
       };
       // the root lies below the envelope strain of the elastic flow, e_trial
       // (in uniaxial stress; the increment of the largest principal value
@@ -582,6 +592,20 @@ namespace masonry
       // kept opening carried it, and in the walls of the study sweep such
       // cells ran away (contrib/study/results-2026-11-25)
       const double beta = cracked_compression_factor(old.kappa_t);
+      // the factor that scales a measure tau (of the part s- or s+) onto
+      // the threshold T: T / tau, with the interaction scale_onto() (the
+      // envelope's damage, its strength f, the other part's utilisation)
+      auto scale = [&](const double tau,
+                       const double damage,
+                       const double f,
+                       const double other,
+                       const double T) {
+        return interaction ? scale_onto(tau,
+                                        (1 - damage) * tau / (phi * f),
+                                        std::min(other, 0.5),
+                                        T) :
+                             T / tau;
+      };
       for (unsigned int pass = 0; pass < max_passes; ++pass)
         {
           bool cracked = false, crushed = false;
@@ -597,13 +621,11 @@ namespace masonry
               {
                 const EnvelopePoint env = compression(e, l, phi);
                 const double        T   = E * (e - env.plastic);
-                const double        s =
-                  interaction ?
-                           scale_onto(tau_c,
-                               (1 - env.damage) * tau_c / (phi * f_c),
-                               std::min((1 - d_t) * tau_t / (phi * f_t), 0.5),
-                               beta * T) :
-                           beta * T / tau_c;
+                const double        s   = scale(tau_c,
+                                       env.damage,
+                                       f_c,
+                                       (1 - d_t) * tau_t / (phi * f_t),
+                                       beta * T);
                 if (radial_flow)
                   {
                     updated.plastic_strain += (1 - s) * compliance(minus);
@@ -662,14 +684,11 @@ namespace masonry
                   {
                     const EnvelopePoint env = tension(e, l, phi);
                     const double        T   = E * (e - env.plastic);
-                    const double        s =
-                      interaction ?
-                               scale_onto(tau_t,
-                                   (1 - env.damage) * tau_t / (phi * f_t),
-                                   std::min((1 - d_c) * tau_c / (phi * f_c),
-                                            0.5),
-                                   T) :
-                               T / tau_t;
+                    const double        s   = scale(tau_t,
+                                           env.damage,
+                                           f_t,
+                                           (1 - d_c) * tau_c / (phi * f_c),
+                                           T);
                     updated.plastic_strain += (1 - s) * compliance(plus);
                     plus *= s;
                     updated.kappa_t     = e;

@@ -62,7 +62,9 @@
  *   strain), which can push s- outside the compressive envelope just
  *   returned to; the compressive and tensile returns are then repeated,
  *   from the envelope strains reached, until neither acts (at most 20
- *   passes), so that the returned state is inside both envelopes;
+ *   passes), so that the returned state is inside both envelopes. The
+ *   crack return's measure is the signed largest principal value, so that
+ *   a crack whose envelope has softened to T ~ 0 opens only until s1 = T;
  * - `Plastic Poisson's ratio' nu_p: the compressive plastic strain grows
  *   along C_p^-1 : s- (compliance with E0, nu_p) instead of C0^-1 : s-,
  *   with the multiplier from a scalar root search (flow()); a confined
