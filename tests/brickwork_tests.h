@@ -200,6 +200,23 @@ namespace brickwork_tests
       }
     return rows;
   }
+  /**
+   * The number N of the first line `Step N ...' of a log after the first
+   * line that contains @p text; -1 if there is none.
+   */
+  inline int
+  first_step_after(const std::string &log, const std::string &text)
+  {
+    std::ifstream in(log);
+    std::string   line;
+    bool          seen = false;
+    while (std::getline(in, line))
+      if (!seen)
+        seen = line.find(text) != std::string::npos;
+      else if (line.rfind("Step ", 0) == 0)
+        return std::stoi(line.substr(5));
+    return -1;
+  }
   /** The entries of the DataSet lines of a PVD file, in order. */
   inline std::vector<std::string>
   pvd_entries(const std::string &file)

@@ -533,7 +533,7 @@ namespace masonry
                 progress.increment /= 2;
                 progress.easy_steps = 0;
                 pcout << "  cut-back: step halved to " << progress.increment
-                      << " m\n";
+                      << " m (" << failure << ")\n";
                 continue;
               }
             consecutive_cutbacks = 0;
