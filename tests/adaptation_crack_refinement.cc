@@ -14,7 +14,14 @@
  *   strip, so one stage from 2 x 2 per half gives the uniform 4 x 4 mesh,
  *   and its objective equals that of uniform 4 x 4 to 1e-8; with 0.5 the
  *   objectives of 2 stages never decrease and the final one stays at or
- *   below uniform 8 x 8.
+ *   below uniform 8 x 8;
+ * - the same barrel with `Split = blocks' (local refinement): `Marked
+ *   fraction = 1' splits every block, so one stage from 2 x 2 per half
+ *   gives the blocks of uniform 4 x 4, and its objective equals uniform
+ *   4 x 4's to 1e-8; with 0.5, 2 stages (meshes with blocks of different
+ *   sizes side by side: interfaces along half an edge, also across the
+ *   crown) have objectives that never decrease (nested meshes) and stay
+ *   at or below uniform 8 x 8 (every block is a union of its blocks).
  */
 #include <deal.II/base/mpi.h>
 
@@ -25,12 +32,15 @@ using namespace vault_tests;
 namespace
 {
   std::string
-  refinement(const unsigned int stages, const double fraction)
+  refinement(const unsigned int stages,
+             const double       fraction,
+             const std::string &split = "lines")
   {
     std::ostringstream s;
     s << "subsection Adaptation\n  set Optimiser = crack refinement\n"
       << "  subsection Crack refinement\n    set Stages = " << stages
-      << "\n    set Marked fraction = " << fraction << "\n  end\nend\n";
+      << "\n    set Marked fraction = " << fraction
+      << "\n    set Split = " << split << "\n  end\nend\n";
     return s.str();
   }
 
@@ -114,5 +124,28 @@ main(int argc, char **argv)
             c.at("adaptation").at("stages").at(1).at("fitness").as_number() -
               1e-9 * wc,
         "barrel, marked fraction 0.5: between the last stage and uniform "
+        "8 x 8");
+
+  // `Split = blocks' (local, non-conforming refinement)
+  const masonry::Json d =
+    run("barrel_blocks_all", barrel(2) + refinement(1, 1, "blocks"));
+  check(d.at("n_blocks").as_number() == 32,
+        "barrel, blocks, marked fraction 1: every block split (32 blocks)");
+  check(relative(d.at("objective").as_number(), uniform4) < 1e-8,
+        "barrel, blocks, marked fraction 1: the objective of uniform 4 x 4 "
+        "(1e-8)");
+  const masonry::Json e =
+    run("barrel_blocks_half", barrel(2) + refinement(2, 0.5, "blocks"));
+  const double we = e.at("objective").as_number();
+  check(monotone(e.at("adaptation")),
+        "barrel, blocks, marked fraction 0.5: the objective never decreases");
+  check(we <= uniform8 * (1 + 1e-9) &&
+          we >=
+            e.at("adaptation").at("stages").at(1).at("fitness").as_number() -
+              1e-9 * we,
+        "barrel, blocks, marked fraction 0.5: between the last stage and "
+        "uniform 8 x 8");
+  check(e.at("n_blocks").as_number() < 128,
+        "barrel, blocks, marked fraction 0.5: fewer blocks than uniform "
         "8 x 8");
 }

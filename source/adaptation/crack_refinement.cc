@@ -30,12 +30,28 @@ namespace masonry
                         "3",
                         dealii::Patterns::Integer(0, 64),
                         "Refinement stages (dimensionless): each solves the "
-                        "current mesh and splits the most cracked strips "
-                        "between neighbouring parameter lines at their "
-                        "middle; the last mesh is then analysed as usual "
+                        "current mesh and refines it where it cracks most "
+                        "(`Split'); the last mesh is then analysed as usual "
                         "(Stages + 1 LP solves in all). The first mesh is "
                         "the uniform one of `Blocks along u' x `Blocks "
                         "along v'.");
+      prm.declare_entry(
+        "Split",
+        "lines",
+        dealii::Patterns::Selection("lines|blocks"),
+        "What a stage refines (unitless choice). `lines': whole strips "
+        "between neighbouring parameter lines (a tensor-product mesh, "
+        "`Marked fraction' and `Marking' below). `blocks': only the blocks "
+        "next to cracks, each into four at the middle of its parameter "
+        "cell (local refinement: a block may border two smaller ones "
+        "along one edge, and that edge then carries one interface per "
+        "smaller block, along their common half; neighbours are split "
+        "too where two blocks sharing an edge would differ by more than one "
+        "split). A block's activity is half the activity (defined below) "
+        "of each interface it shares with another block plus all of that "
+        "of its support interfaces; the blocks of largest activity whose "
+        "activities add up to `Marked fraction' of the total are split "
+        "(`Marking' is not used).");
       prm.declare_entry(
         "Marked fraction",
         "0.5",
@@ -80,6 +96,7 @@ namespace masonry
     {
       stages          = prm.get_integer("Stages");
       marked_fraction = prm.get_double("Marked fraction");
+      split_blocks    = prm.get("Split") == "blocks";
       per_direction   = prm.get("Marking") == "per direction";
       max_blocks      = prm.get_integer("Largest number of blocks");
     }
@@ -180,6 +197,23 @@ namespace masonry
       return activity;
     }
 
+    std::vector<double>
+    RigidBlockAnalysis::block_activity(
+      const std::vector<double> &activity) const
+    {
+      const auto         &interfaces = model->interfaces();
+      std::vector<double> a(model->blocks().size(), 0.);
+      for (unsigned int k = 0; k < interfaces.size(); ++k)
+        if (interfaces[k].second == rigid_blocks::Interface::support)
+          a[interfaces[k].first] += activity[2 * k];
+        else
+          {
+            a[interfaces[k].first] += 0.5 * activity[2 * k];
+            a[interfaces[k].second] += 0.5 * activity[2 * k];
+          }
+      return a;
+    }
+
     namespace
     {
       /** n + 1 uniform line positions in [0, 1]. */
@@ -251,7 +285,7 @@ namespace masonry
       Json       stages = Json::array();
       quiet             = true;
       double first = -std::numeric_limits<double>::infinity(), last = first;
-      unsigned int n_stages = 0;
+      unsigned int n_stages = 0, n_split = 0;
       for (unsigned int s = 0; s < refinement.stages; ++s)
         {
           set_mesh();
@@ -264,9 +298,10 @@ namespace masonry
           {
             std::ostringstream line;
             line << "  stage " << s << ": " << blocks.size() << " blocks ("
-                 << options.n_u << " x " << options.n_v << " per patch), best "
-                 << std::setprecision(8) << f << ", " << std::setprecision(3)
-                 << seconds << " s\n";
+                 << options.n_u << " x " << options.n_v << " per patch"
+                 << (refinement.split_blocks ? ", locally refined" : "")
+                 << "), best " << std::setprecision(8) << f << ", "
+                 << std::setprecision(3) << seconds << " s\n";
             pcout << line.str();
           }
           Json stage              = Json::object();
@@ -282,6 +317,30 @@ namespace masonry
           last = f;
           if (!std::isfinite(f))
             break;
+          if (refinement.split_blocks)
+            {
+              // the centres of the blocks to split, by patch
+              std::vector<std::vector<dealii::Point<2>>> centres(n_patches);
+              const auto marked = refinement.mark(block_activity(activity));
+              const unsigned int n_marked =
+                std::count(marked.begin(), marked.end(), true);
+              if (n_marked == 0 ||
+                  blocks.size() + 3 * n_marked > refinement.max_blocks)
+                break;
+              for (unsigned int b = 0; b < blocks.size(); ++b)
+                if (marked[b])
+                  {
+                    dealii::Point<2> c;
+                    for (const auto &corner : blocks[b].corners)
+                      c += 0.25 * corner;
+                    centres[blocks[b].patch].push_back(c);
+                  }
+              options.splits.resize(n_patches);
+              for (unsigned int p = 0; p < n_patches; ++p)
+                options.splits[p].push_back(centres[p]);
+              n_split += n_marked;
+              continue;
+            }
 
           // crack activity of the strips: an interface on a line u = const
           // counts for the u strips of its blocks (half each, all of it for
@@ -410,11 +469,16 @@ namespace masonry
         lines_u.push_back(numbers(x));
       a["lines_u"]                  = lines_u;
       a["lines_v"]                  = numbers(v);
+      a["blocks_split"]             = n_split;
       context.summary["adaptation"] = a;
       std::ostringstream line;
       line << "Adaptation: " << n_stages << " stages in "
-           << std::setprecision(3) << seconds << " s; the final mesh has "
-           << options.n_u << " x " << options.n_v << " blocks per patch\n";
+           << std::setprecision(3) << seconds << " s; the final mesh has ";
+      if (refinement.split_blocks)
+        line << n_split << " blocks split (from " << options.n_u << " x "
+             << options.n_v << " per patch)\n";
+      else
+        line << options.n_u << " x " << options.n_v << " blocks per patch\n";
       pcout << line.str();
     }
   } // namespace analysis

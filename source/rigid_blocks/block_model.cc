@@ -283,6 +283,45 @@ namespace masonry
       connect_boundary_faces(boundary_faces);
     }
 
+    namespace
+    {
+      /** Split the cells of @p mesh (patch @p p) whose centres are listed,
+       * round by round (Discretisation::splits). */
+      void
+      split_cells(const std::vector<std::vector<dealii::Point<2>>> &rounds,
+                  const unsigned int                                p,
+                  dealii::Triangulation<2>                         &mesh)
+      {
+        for (const auto &round : rounds)
+          {
+            for (const auto &centre : round)
+              {
+                bool found = false;
+                for (const auto &cell : mesh.active_cell_iterators())
+                  {
+                    dealii::Point<2> c;
+                    for (const unsigned int v : cell->vertex_indices())
+                      c += 0.25 * cell->vertex(v);
+                    if (c.distance(centre) < 1e-10)
+                      {
+                        cell->set_refine_flag();
+                        found = true;
+                        break;
+                      }
+                  }
+                AssertThrow(found,
+                            dealii::ExcMessage(
+                              "local refinement: no block of patch " +
+                              std::to_string(p) + " has its centre at (" +
+                              std::to_string(centre[0]) + ", " +
+                              std::to_string(centre[1]) + ")"));
+              }
+            mesh.execute_coarsening_and_refinement();
+          }
+      }
+
+    } // namespace
+
     void
     BlockModel::add_patch_blocks(const unsigned int         p,
                                  std::vector<BoundaryFace> &boundary_faces,
@@ -304,6 +343,8 @@ namespace masonry
       for (const auto &cell : mesh.active_cell_iterators())
         for (const unsigned int v : cell->vertex_indices())
           cell->vertex(v) = vertices[p][cell->vertex_index(v)];
+      if (p < options.splits.size())
+        split_cells(options.splits[p], p, mesh);
 
       const unsigned int offset = block_list.size();
       for (const auto &cell : mesh.active_cell_iterators())
@@ -349,8 +390,23 @@ namespace masonry
                   patches[p].point(dealii::Point<2>(0.5 * (uv[0] + uv[1])));
                 boundary_faces.push_back(bf);
               }
-            else if (cell->neighbor(f)->active_cell_index() >
-                     cell->active_cell_index())
+            else if (cell->face(f)->has_children())
+              // split neighbours: one interface along each half of the edge
+              for (unsigned int sf = 0; sf < cell->face(f)->n_children(); ++sf)
+                {
+                  const auto neighbor = cell->neighbor_child_on_subface(f, sf);
+                  AssertThrow(neighbor->is_active(),
+                              dealii::ExcInternalError());
+                  inner_faces.push_back(
+                    {b,
+                     offset + neighbor->active_cell_index(),
+                     {{cell->face(f)->child(sf)->vertex(0),
+                       cell->face(f)->child(sf)->vertex(1)}},
+                     outward});
+                }
+            else if (!cell->neighbor_is_coarser(f) &&
+                     cell->neighbor(f)->active_cell_index() >
+                       cell->active_cell_index())
               inner_faces.push_back(
                 {b,
                  offset + cell->neighbor(f)->active_cell_index(),
@@ -526,6 +582,61 @@ namespace masonry
                     fa.patch, fa.uv, fa.outward, fa.block, fb.block);
                   break;
                 }
+            }
+        }
+      // locally refined meshes: a face of a split block glued to part of a
+      // coarser block's face of the other patch, along one of the halves
+      // (quarters, ...) of that face in its parameters
+      unsigned int depth = 0;
+      for (const auto &rounds : options.splits)
+        depth = std::max<unsigned int>(depth, rounds.size());
+      for (unsigned int a = 0; a < boundary_faces.size() && depth > 0; ++a)
+        {
+          const auto &fa = boundary_faces[a];
+          if (used[a] || (fa.x[0].distance(fa.x[1]) < tolerance &&
+                          fa.x[0].distance(fa.x[2]) < tolerance))
+            continue;
+          for (unsigned int d = 1; d <= depth; ++d)
+            {
+              // the ends and midpoints of the 2^d pieces of face a
+              const unsigned int            n = 1u << d;
+              std::vector<dealii::Point<2>> uv(2 * n + 1);
+              std::vector<dealii::Point<3>> x(2 * n + 1);
+              for (unsigned int k = 0; k <= 2 * n; ++k)
+                {
+                  uv[k] =
+                    fa.uv[0] + (double(k) / (2 * n)) * (fa.uv[1] - fa.uv[0]);
+                  x[k] = patches[fa.patch].point(uv[k]);
+                }
+              for (unsigned int k = 0; k < n; ++k)
+                for (unsigned int b = 0; b < boundary_faces.size(); ++b)
+                  {
+                    const auto &fb = boundary_faces[b];
+                    if (used[b] || b == a || fa.block == fb.block)
+                      continue;
+                    const auto &x0 = x[2 * k], &x1 = x[2 * k + 2];
+                    if (fb.x[2].distance(x[2 * k + 1]) < tolerance &&
+                        ((fb.x[0].distance(x0) < tolerance &&
+                          fb.x[1].distance(x1) < tolerance) ||
+                         (fb.x[0].distance(x1) < tolerance &&
+                          fb.x[1].distance(x0) < tolerance)))
+                      {
+                        // the geometry of the face listed first, as for
+                        // conforming faces (where the patches meet at an
+                        // angle, the contact points depend on the side)
+                        used[a] = used[b] = true;
+                        if (b < a)
+                          add_interface(
+                            fb.patch, fb.uv, fb.outward, fb.block, fa.block);
+                        else
+                          add_interface(fa.patch,
+                                        {{uv[2 * k], uv[2 * k + 2]}},
+                                        fa.outward,
+                                        fa.block,
+                                        fb.block);
+                        break;
+                      }
+                  }
             }
         }
       std::set<std::string> labels_found;

@@ -29,7 +29,8 @@ namespace masonry
     class CrackRefinement : public Optimiser
     {
     public:
-      /** Stages, Marked fraction, Marking, Largest number of blocks. */
+      /** Stages, Split, Marked fraction, Marking, Largest number of
+       * blocks. */
       static void
       declare_parameters(dealii::ParameterHandler &prm);
 
@@ -62,6 +63,9 @@ namespace masonry
       double marked_fraction = 0.5;
       /** `Marking = per direction`: one marking per direction. */
       bool per_direction = false;
+      /** `Split = blocks`: split the blocks next to cracks into four
+       * (local, non-conforming refinement) instead of whole strips. */
+      bool split_blocks = false;
       /** No stage refines a mesh with this many blocks or more. */
       unsigned int max_blocks = 100000;
     };

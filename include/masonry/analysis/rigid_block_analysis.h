@@ -119,6 +119,15 @@ namespace masonry
         const;
 
       /**
+       * The crack activity of every block of the current model from that
+       * of the interfaces (@p activity, as crack_activity() returns it):
+       * half the [2k] number of every interface k between two blocks to
+       * each, all of a support interface's to its block (m³).
+       */
+      std::vector<double>
+      block_activity(const std::vector<double> &activity) const;
+
+      /**
        * The parameter meshes of the `lines' genes: per patch n_u − 1 genes
        * for the lines u = const, then n_v − 1 genes shared by all patches
        * for the lines v = const; each group is sorted and mapped to

@@ -133,6 +133,18 @@ namespace masonry
       unsigned int n_quadrature = 6;
       /** Edge labels (from the geometry plugin) that rest on supports. */
       std::set<std::string> supported_edges;
+      /**
+       * Local refinement of the parameter meshes, replayed on the
+       * n_u × n_v mesh of every patch: splits[p][r] are the centres (unit
+       * parameter square) of the cells of patch p split into four in
+       * round r. The mesh stays graded (deal.II splits a neighbour too
+       * where two cells sharing an edge would differ by more than one
+       * level), and an edge between a cell and two split neighbours
+       * carries one interface per neighbour, along the common half of the
+       * edge (non-conforming blocks; also across patches). Empty: no
+       * local refinement.
+       */
+      std::vector<std::vector<std::vector<dealii::Point<2>>>> splits;
     };
 
     /**
