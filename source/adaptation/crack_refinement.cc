@@ -88,7 +88,8 @@ namespace masonry
                         dealii::Patterns::Integer(1),
                         "Refinement stops before a stage whose mesh would "
                         "have more blocks than this (all patches; "
-                        "dimensionless).");
+                        "dimensionless; with `Split = blocks' not counting "
+                        "the neighbours split to keep the mesh graded).");
     }
 
     void

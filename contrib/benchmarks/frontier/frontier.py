@@ -10,8 +10,10 @@ this runs
     a CPU budget (--budget times the CPU time of uniform 12x16, at least
     --min-budget s; RLIMIT_CPU ends the run);
   * crack refinement (`Optimiser = crack refinement'): the settings of
-    CRACK (start mesh, stages, marked fraction, marking), each run to its
-    end (stopped at --uniform-limit CPU s).
+    CRACK (start mesh, stages, marked fraction, marking, split: `lines'
+    splits whole strips, `blocks' only the blocks next to cracks, reported
+    as `local refinement'), each run to its end (stopped at
+    --uniform-limit CPU s; --crack-runs selects by split).
 
 --strategies selects what runs: `all' (default), or a comma-separated
 subset of `uniform', `optimisers', `crack'.
@@ -49,11 +51,24 @@ CASES = {
 OPTIMISERS = ["genetic", "differential evolution", "cmaes", "particle swarm"]
 GENERATION = re.compile(r"^\s*generation (\d+): best (\S+), mean \S+, (\d+) evaluations")
 STAGE = re.compile(r"^\s*stage (\d+): (\d+) blocks .*, best (\S+),")
-# crack refinement: (start mesh, stages, marked fraction, marking)
-CRACK = [((3, 4), 3, 0.5, "per direction"), ((3, 4), 3, 0.6, "per direction"),
-         ((3, 4), 4, 0.5, "per direction"), ((3, 4), 3, 0.7, "per direction"),
-         ((6, 8), 1, 0.5, "per direction"), ((6, 8), 1, 0.6, "per direction"),
-         ((3, 4), 3, 0.6, "joint")]
+# crack refinement: (start mesh, stages, marked fraction, marking, split);
+# `lines' splits whole strips, `blocks' only the blocks next to cracks
+# (local refinement; `marking' is not used)
+CRACK = [((3, 4), 3, 0.5, "per direction", "lines"),
+         ((3, 4), 3, 0.6, "per direction", "lines"),
+         ((3, 4), 4, 0.5, "per direction", "lines"),
+         ((3, 4), 3, 0.7, "per direction", "lines"),
+         ((6, 8), 1, 0.5, "per direction", "lines"),
+         ((6, 8), 1, 0.6, "per direction", "lines"),
+         ((3, 4), 3, 0.6, "joint", "lines"),
+         ((3, 4), 3, 0.7, "joint", "blocks"),
+         ((3, 4), 4, 0.5, "joint", "blocks"),
+         ((3, 4), 4, 0.7, "joint", "blocks"),
+         ((3, 4), 4, 0.9, "joint", "blocks"),
+         ((6, 8), 1, 0.5, "joint", "blocks"),
+         ((6, 8), 1, 0.7, "joint", "blocks"),
+         ((6, 8), 2, 0.5, "joint", "blocks"),
+         ((6, 8), 2, 0.7, "joint", "blocks")]
 TICK = os.sysconf("SC_CLK_TCK")
 
 
@@ -85,6 +100,7 @@ subsection Adaptation
     set Stages          = {crack[0]}
     set Marked fraction = {crack[1]}
     set Marking         = {crack[2]}
+    set Split           = {crack[3]}
   end
 """) + """end
 """
@@ -160,6 +176,9 @@ def main():
                     help="only these optimiser runs, e.g. "
                     "'genetic:lines:3x4,cmaes:vertices:3x4' (default: every "
                     "optimiser x lines/vertices x 3x4/6x8)")
+    ap.add_argument("--crack-runs", default="",
+                    help="only the crack refinements that split these "
+                    "(comma-separated: lines, blocks; default: both)")
     ap.add_argument("--strategies", default="all",
                     help="all, or a comma-separated subset of uniform, "
                     "optimisers, crack")
@@ -214,29 +233,36 @@ def main():
                          "done" if ok else "stopped"])
             print(f"{name}: best {last[3]:.6g} J after {last[2]} evaluations, "
                   f"{cpu:.2f} CPU s", flush=True)
-        crack = [((3, 4), 2, 0.6, "joint")] if args.quick else CRACK
-        for (nu, nv), stages, fraction, marking in (
+        crack = ([((3, 4), 2, 0.6, "joint", "lines"),
+                  ((3, 4), 2, 0.6, "joint", "blocks")] if args.quick
+                 else CRACK)
+        if args.crack_runs:
+            crack = [c for c in crack if c[4] in args.crack_runs.split(",")]
+        for (nu, nv), stages, fraction, marking, split in (
                 crack if "crack" in strategies else []):
-            label = f"S{stages} f{fraction} {marking}"
+            strategy = ("local refinement" if split == "blocks"
+                        else "crack refinement")
+            label = (f"S{stages} f{fraction}"
+                     + ("" if split == "blocks" else f" {marking}"))
             name = (f"{case}_crack_{nu}x{nv}_{stages}_{fraction}_"
-                    f"{marking.replace(' ', '_')}")
+                    f"{marking.replace(' ', '_')}_{split}")
             out = os.path.join(args.out, name)
             prm = write_prm(case, nu, nv, out, "crack refinement",
-                            crack=(stages, fraction, marking))
+                            crack=(stages, fraction, marking, split))
             points, cpu, wall, ok, log = run(args.masonry, prm,
                                              args.uniform_limit)
             value = objective(out) if ok else math.nan
             blocks = json.load(open(os.path.join(out, "summary.json")))[
                 "n_blocks"] if ok else 0
             for c, g, b, best in points:
-                rows.append([case, "crack refinement", f"{nu}x{nv}", label,
+                rows.append([case, strategy, f"{nu}x{nv}", label,
                              f"{c:.3f}", "", g, b, f"{best:.10g}",
                              "generation"])
-            rows.append([case, "crack refinement", f"{nu}x{nv}", label,
+            rows.append([case, strategy, f"{nu}x{nv}", label,
                          f"{cpu:.3f}", f"{wall:.2f}", len(points), blocks,
                          f"{value:.10g}", "done" if ok else "stopped"])
             if ok:
-                rows.append([case, "crack refinement", f"{nu}x{nv}", label,
+                rows.append([case, strategy, f"{nu}x{nv}", label,
                              f"{cpu:.3f}", "", len(points), blocks,
                              f"{value:.10g}", "generation"])
             print(f"{name}: {value:.6g} J with {blocks} blocks, {cpu:.2f} CPU s, "
@@ -260,15 +286,16 @@ def report(out, rows):
                              squeeze=False)
     md = ["| case | strategy | start mesh | genes / settings | evaluations "
           "(crack: final blocks) | best objective (J) | CPU s | wall s "
-          "| CPU s to uniform 6x8 | CPU s to uniform 12x16 |",
-          "|---|---|---|---|---:|---:|---:|---:|---:|---:|"]
+          "| CPU s to uniform 6x8 | CPU s to uniform 12x16 "
+          "| ÷ uniform 12x16's CPU s |",
+          "|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|"]
     for ax, case in zip(axes[0], cases):
         uni = [r for r in rows if r[0] == case and r[1] == "uniform"]
         done = {r[2]: (float(r[8]), float(r[4])) for r in uni if r[9] == "done"}
         for r in uni:
             md.append(f"| {case} | uniform | {r[2]} | | 1 | "
                       + (f"{float(r[8]):.6g}" if r[9] == "done" else "not finished")
-                      + f" | {float(r[4]):.2f} | {float(r[5]):.2f} | | |")
+                      + f" | {float(r[4]):.2f} | {float(r[5]):.2f} | | | |")
         xs = [done[m][1] for m in done]
         ax.plot(xs, [done[m][0] for m in done], "ko-", lw=2, label="uniform", zorder=5)
         for m in done:
@@ -288,9 +315,11 @@ def report(out, rows):
             t6 = first_reaching(done["6x8"][0]) if "6x8" in done else ""
             t12 = first_reaching(done["12x16"][0]) if "12x16" in done else ""
             wall = f"{float(end[5]):.2f}" if end[5] else ""
+            ratio = (f"{float(t12) / done['12x16'][1]:.2f}"
+                     if t12 not in ("", "not reached") else "")
             md.append(f"| {case} | {s[0]} | {s[1]} | {s[2]} | {end[7]} | "
                       f"{float(end[8]):.6g} | {float(end[4]):.2f} | {wall} "
-                      f"| {t6} | {t12} |")
+                      f"| {t6} | {t12} | {ratio} |")
             if gens:
                 x = [float(r[4]) for r in gens] + [float(end[4])]
                 y = [float(r[8]) for r in gens] + [float(gens[-1][8])]
@@ -301,7 +330,9 @@ def report(out, rows):
                             label=f"{s[0]}, {s[2]}, from {s[1]}")
                 else:
                     crack = [t for t in strategies if t[0] not in OPTIMISERS]
-                    ax.step(x[:-1], y[:-1], "-", where="post", marker="s",
+                    ax.step(x[:-1], y[:-1],
+                            "--" if s[0] == "local refinement" else "-",
+                            where="post", marker="s",
                             ms=3, color="C%d" % (4 + crack.index(s) % 6),
                             lw=1.5, label=f"{s[0]}, {s[2]}, from {s[1]}")
         if "12x16" in done:
