@@ -204,6 +204,22 @@ namespace masonry
         "tension or compression is unchanged; false: independent "
         "criteria, a square envelope).");
       prm.declare_entry(
+        "Nonlocal length",
+        "0",
+        Double(0),
+        "Radius R (m, >= 0; 0: local) of the nonlocal average of the "
+        "tensile measure tau_t (the largest principal effective stress) "
+        "of a unit: in the implicit update after each IMPL-EX step, the "
+        "trial tau_t of every unit point is replaced by its average over "
+        "the points of the same unit within R, weighted by the bell "
+        "function (1 - r^2 / R^2)^2 and the points' volumes (Bazant & "
+        "Jirasek 2002), and the law's tensile return and the "
+        "interaction's u_t use it. It gives the units' failure under "
+        "lateral tension a material length, so that the lateral tension a "
+        "finer mesh resolves near the bed faces does not crack them "
+        "earlier. Needs `Damage integration = implex'; units only (the "
+        "`mortar' law takes 0). doc/brickwork.md, bonded walls, Mesh.");
+      prm.declare_entry(
         "Cracked compression softening",
         defaults.cracked,
         Double(0),
@@ -271,6 +287,8 @@ namespace masonry
       c_cracked     = prm.get_double("Cracked compression softening");
       beta_residual = prm.get_double("Cracked compression residual ratio");
       crack_flow    = prm.get("Tensile plastic flow") == "crack";
+
+      nonlocal_radius = prm.get_double("Nonlocal length");
       {
         const std::string flow = prm.get("Plastic Poisson's ratio");
         radial_flow            = flow == "elastic";
