@@ -207,18 +207,20 @@ namespace masonry
         "Nonlocal length",
         "0",
         Double(0),
-        "Radius R (m, >= 0; 0: local) of the nonlocal average of the "
-        "tensile measure tau_t (the largest principal effective stress) "
-        "of a unit: in the implicit update after each IMPL-EX step, the "
-        "trial tau_t of every unit point is replaced by its average over "
-        "the points of the same unit within R, weighted by the bell "
-        "function (1 - r^2 / R^2)^2 and the points' volumes (Bazant & "
-        "Jirasek 2002), and the law's tensile return and the "
-        "interaction's u_t use it. It gives the units' failure under "
-        "lateral tension a material length, so that the lateral tension a "
-        "finer mesh resolves near the bed faces does not crack them "
-        "earlier. Needs `Damage integration = implex'; units only (the "
-        "`mortar' law takes 0). doc/brickwork.md, bonded walls, Mesh.");
+        "Radius R (m, >= 0; 0: local) of the nonlocal average of a "
+        "unit's equivalent stresses tau_t (the largest principal effective "
+        "stress) and tau_c (the compressive measure): in the implicit "
+        "update after each IMPL-EX step the trial tau_t and tau_c of every "
+        "unit point are replaced by their averages over the points of the "
+        "same unit within R, weighted by the bell function (1 - r^2 / "
+        "R^2)^2 and the points' volumes (Bazant & Jirasek 2002), and the "
+        "law's returns and the interaction's utilisations use them. A "
+        "material length for the units' failure under the mortar's "
+        "lateral push, which a pointwise criterion sees growing as the "
+        "mesh resolves it. Needs `Damage integration = implex'; units "
+        "only (the mortar's must be 0). No source for a value: with 30 mm "
+        "the examples' mesh dependence is not removed (doc/brickwork.md, "
+        "bonded walls, Mesh).");
       prm.declare_entry(
         "Cracked compression softening",
         defaults.cracked,

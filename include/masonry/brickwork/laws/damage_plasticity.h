@@ -69,13 +69,13 @@
  *   along C_p^-1 : s- (compliance with E0, nu_p) instead of C0^-1 : s-,
  *   with the multiplier from a scalar root search (flow()); a confined
  *   mortar keeps expanding laterally only with nu_p > p / (|sigma_1| + p);
- * - `Nonlocal length' R: the tensile measure tau_t, wherever it enters
- *   (the tensile return, the interaction's u_t), is multiplied by
- *   BrickPoint::tensile_factor rho, which the model sets to the ratio of
- *   the nonlocal average of the trial tau_t over a sphere of radius R
- *   within the unit to its local value (model/nonlocal.h); at the trial
- *   state the law sees the averaged measure, during the return it scales
- *   with the local one.
+ * - `Nonlocal length' R: the measures tau_t and tau_c, wherever they enter
+ *   (the returns, the interaction's utilisations), are multiplied by
+ *   BrickPoint::tensile_factor and compressive_factor, which the model sets
+ *   to the ratios of the nonlocal averages of the trial measures over a
+ *   sphere of radius R within the unit to their local values
+ *   (model/nonlocal.h); at the trial state the law sees the averaged
+ *   measures, during the return they scale with the local ones.
  */
 #ifndef masonry_brickwork_laws_damage_plasticity_h
 #define masonry_brickwork_laws_damage_plasticity_h
