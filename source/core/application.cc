@@ -12,6 +12,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <ctime>
 #include <dlfcn.h>
@@ -19,6 +20,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <map>
 #include <sstream>
 
 namespace masonry
@@ -171,6 +173,48 @@ namespace masonry
       for (const auto &item : list)
         s += (s.empty() ? "" : ", ") + item;
       return s;
+    }
+
+    /**
+     * The files of a run for its last line: a series of four or more files
+     * that differ only in a step number after an underscore (solution_0020.vtu,
+     * solution_0040.vtu, ...) is named once with `*` for the number and its
+     * count, so a cyclic run of a thousand steps does not print a hundred
+     * names.
+     */
+    std::string
+    join_series(const std::vector<std::string> &files)
+    {
+      std::vector<std::string>                        keys;
+      std::map<std::string, std::vector<std::string>> members;
+      for (const auto &file : files)
+        {
+          std::string key        = file;
+          const auto  underscore = file.rfind('_');
+          if (underscore != std::string::npos)
+            {
+              auto end = underscore + 1;
+              while (end < file.size() &&
+                     std::isdigit(static_cast<unsigned char>(file[end])))
+                ++end;
+              if (end > underscore + 1)
+                key = file.substr(0, underscore + 1) + "*" + file.substr(end);
+            }
+          if (members[key].empty())
+            keys.push_back(key);
+          members[key].push_back(file);
+        }
+      std::vector<std::string> names;
+      for (const auto &key : keys)
+        {
+          const auto &list = members[key];
+          if (list.size() >= 4)
+            names.push_back(key + " (" + std::to_string(list.size()) +
+                            " files)");
+          else
+            names.insert(names.end(), list.begin(), list.end());
+        }
+      return join(names);
     }
 
     /** Statuses that are no result of the analysis: the run failed. */
@@ -441,8 +485,8 @@ namespace masonry
         pcout << "Note: files of an earlier run left in " << output.path()
               << " (not written by this run): " << join(stale) << "\n";
       pcout << "Status: " << summary.at("status").as_string() << "\n"
-            << "Results: " << output.path() << " (" << join(output.files())
-            << ")\n"
+            << "Results: " << output.path() << " ("
+            << join_series(output.files()) << ")\n"
             << "Wall time: " << std::fixed << std::setprecision(2)
             << summary.at("wall_seconds").as_number() << " s\n";
       return 0;
