@@ -19,6 +19,8 @@
 #include <unistd.h>
 #include <unordered_map>
 
+#include "clp_barrier.h"
+
 namespace masonry
 {
   namespace lp
@@ -349,13 +351,6 @@ namespace masonry
           const std::string &method,
           const bool         use_presolve) const;
 
-      /**
-       * `automatic`: solve Clp's explicit dual of @p model (the static
-       * problem of the mechanism LP) with @p method, restore the primal and
-       * dual solutions into @p model and finish with the primal simplex
-       * from that basis (usually no iteration). Returns whether @p model is
-       * then proven optimal; otherwise the caller solves @p lp directly.
-       */
       /** How solve_through_dual() ended. */
       enum class DualRoute
       {
@@ -370,12 +365,14 @@ namespace masonry
         failed
       };
 
+      /** `automatic`: Clp's explicit dual of @p model (the static problem)
+       *  solved by @p method, its vertex restored into @p model, cleaned up.
+       */
       DualRoute
       solve_through_dual(ClpSimplex        &model,
                          const std::string &method,
                          unsigned int      &iterations) const;
     };
-
 
     void
     Clp::declare_parameters(dealii::ParameterHandler &prm)
@@ -471,6 +468,8 @@ namespace masonry
              const std::string &method,
              const bool         use_presolve) const
     {
+      if (method == "barrier" && !use_presolve)
+        return barrier_with_crossover(model); // ClpSolve's steps, faster
       ClpSolve options;
       if (method == "primal simplex")
         options.setSolveType(ClpSolve::usePrimal);

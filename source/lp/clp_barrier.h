@@ -1,0 +1,33 @@
+/**
+ * @file
+ * Clp's barrier with crossover, as ClpSolve runs it without presolve, but
+ * with a Cholesky factorisation that keeps its ordering and symbolic
+ * factorisation between LPs of the same sparsity (the evaluations of one
+ * block topology in an adaptation) and forms the normal matrix from a
+ * precomputed plan. Private to the `clp` back-end.
+ */
+#ifndef masonry_lp_clp_barrier_h
+#define masonry_lp_clp_barrier_h
+
+class ClpSimplex;
+
+namespace masonry
+{
+  namespace lp
+  {
+    /**
+     * Solve @p model (loaded, no presolve) by Clp's primal-dual barrier
+     * followed by Clp's crossover to a vertex: the same steps and the same
+     * arithmetic as ClpSimplex::initialSolve() with ClpSolve::useBarrier
+     * and presolve off (the optimum, vertex and iterations are
+     * identical), except that the ordering and symbolic factorisation of
+     * the normal matrix A D A^T are reused from an earlier solve (in this
+     * thread) of an LP with the same sparsity pattern, and that A D A^T is
+     * assembled only in its lower triangle.
+     */
+    void
+    barrier_with_crossover(ClpSimplex &model);
+  } // namespace lp
+} // namespace masonry
+
+#endif
