@@ -187,6 +187,7 @@ def make_sweep_prm(f_b, f_m, directory, quick, model):
     name = f"sweep-fb{f_b:g}-fm{f_m:g}"
     out = os.path.join(directory, name)
     text = set_entry(text, "Output directory", out, "top")
+    text = set_entry(text, "Assembly threads", "1", "wallette")
     x = sweep_inputs(f_b, f_m)
     h_b = float(get_in(text, ["Wallette"], "Brick height") or 0.065)
     h_m = float(get_in(text, ["Wallette"], "Joint thickness") or 0.01)
@@ -259,6 +260,7 @@ def make_detailed_sweep_prm(f_b, f_m, directory, quick):
     name = f"sweep-fb{f_b:g}-fm{f_m:g}"
     out = os.path.join(directory, name)
     text = set_entry(text, "Output directory", out, "top")
+    text = set_entry(text, "Assembly threads", "1", "wallette")
     x = sweep_inputs(f_b, f_m)
     h_b = float(get_in(text, ["Wallette"], "Brick height"))
     h_m = float(get_in(text, ["Wallette"], "Joint thickness"))
@@ -338,6 +340,8 @@ def make_prm(thickness, seed, directory, quick, model="simplified"):
     out = os.path.join(directory, name)
     text = set_entry(text, "Output directory", out, "top")
     text = set_entry(text, "Random seed", str(seed), "wallette")
+    # the study runs specimens side by side (--jobs), one core each
+    text = set_entry(text, "Assembly threads", "1", "wallette")
     if quick:
         for key, value in QUICK.items():
             text = set_entry(text, key, value, "wallette")

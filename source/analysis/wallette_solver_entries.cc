@@ -91,14 +91,13 @@ namespace masonry
         "interfaces in an assembly (dimensionless count; 0: the cores "
         "divided among the ranks; the environment variable "
         "DEAL_II_NUM_THREADS caps it). The forces and tangents are summed "
-        "in the order of the cells, yet with more than one thread the "
-        "results have been seen to differ from one thread's in the last "
-        "digits (cause not found), which can change the solution path "
-        "after cracking: 1 is the reference. More threads shorten the "
-        "assembly, a third of the run time of a detailed wallette, on "
-        "idle cores only; on cores shared with other jobs they cost CPU "
-        "time and gain no wall time (contrib/benchmarks/wallette_cyclic/"
-        "results-2026-11-24b.md).");
+        "in the order of the cells and what comes from deal.II's FEValues "
+        "is computed on one thread, so the results are the same bit for "
+        "bit with any number of threads. More threads shorten the "
+        "assembly, some 40 % of the CPU time of a detailed wallette, on "
+        "idle cores; on cores shared with other jobs they cost CPU time "
+        "and gain little wall time (contrib/benchmarks/wallette_cyclic/"
+        "results-2026-11-25b.md).");
       prm.declare_entry(
         "Linear solver",
         "direct",

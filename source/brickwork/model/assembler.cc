@@ -7,9 +7,13 @@
 
 #include "assembler.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <limits>
+
+#include "one_thread.h"
 
 namespace masonry
 {
@@ -47,13 +51,6 @@ namespace masonry
         /** A thread's work space for the brick cells. */
         struct BrickScratch
         {
-          explicit BrickScratch(const FiniteElement<3> &fe)
-            : fe_values(fe, QGauss<3>(2), update_gradients | update_JxW_values)
-          {}
-          BrickScratch(const BrickScratch &other)
-            : BrickScratch(other.fe_values.get_fe())
-          {}
-          FEValues<3>                          fe_values;
           Vector<double>                       ue = Vector<double>(24);
           std::array<SymmetricTensor<2, 3>, 8> strain;
         };
@@ -125,6 +122,9 @@ namespace masonry
       void
       Assembler::make_elastic_caches()
       {
+        // the values of the serial assemblies before the geometries were
+        // kept, whatever `Assembly threads' says (OneThread)
+        const OneThread one_thread;
         // the elastic matrix of every cell, one per cell shape: all cells
         // of a linear material, the cells of a nonlinear one while they
         // stay elastic
@@ -138,9 +138,18 @@ namespace masonry
         QGauss<3>   quadrature(2);
         FEValues<3> fe_values(system.fe,
                               quadrature,
-                              update_gradients | update_JxW_values);
+                              update_gradients | update_JxW_values),
+          cell_values(system.fe,
+                      quadrature,
+                      update_gradients | update_JxW_values);
         matrix_of_cell.assign(system.triangulation.n_active_cells(), nullptr);
-        const FEValuesExtractors::Vector displacement(0);
+        geometry_of_cell.assign(system.triangulation.n_active_cells(), 0);
+        geometries.clear();
+        for (unsigned int i = 0; i < 24; ++i)
+          component[i] = system.fe.system_to_component_index(i).first;
+        // the geometries by cell shape, each checked bit for bit
+        std::map<std::vector<long>, std::vector<unsigned int>> geometries_of;
+        const FEValuesExtractors::Vector                       displacement(0);
         for (const auto &cell : system.dof_handler.active_cell_iterators())
           if (cell->is_locally_owned())
             {
@@ -152,6 +161,34 @@ namespace masonry
                 for (unsigned int d = 0; d < 3; ++d)
                   shape.push_back(std::lround(
                     (cell->vertex(v)[d] - cell->vertex(0)[d]) * 1e12));
+              // every cell in order, as the assemblies did (deal.II reuses
+              // the values of the last cell for one that is a translation
+              // of it, to round-off)
+              cell_values.reinit(cell);
+              CellGeometry geometry;
+              for (unsigned int q = 0; q < 8; ++q)
+                {
+                  geometry.JxW[q] = cell_values.JxW(q);
+                  for (unsigned int i = 0; i < 24; ++i)
+                    geometry.grad[q][i] =
+                      cell_values.shape_grad_component(i, q, component[i]);
+                }
+              auto &same = geometries_of[shape];
+              auto  it =
+                std::find_if(same.begin(),
+                             same.end(),
+                             [&](const unsigned int g) {
+                               return std::memcmp(&geometries[g],
+                                                  &geometry,
+                                                  sizeof(geometry)) == 0;
+                             });
+              if (it == same.end())
+                {
+                  same.push_back(geometries.size());
+                  geometries.push_back(geometry);
+                  it = same.end() - 1;
+                }
+              geometry_of_cell[cell->active_cell_index()] = *it;
               auto &m = cell_matrices[shape];
               if (m.m() == 0)
                 {
@@ -247,6 +284,7 @@ namespace masonry
             else
               system.matrix = 0;
             ++statistics.n_matrix_assemblies;
+            adder.prepare(system);
           }
         assemble_bricks(with_matrix, bricks_assembled, time_step);
         if (keep_bricks && !bricks_assembled)
@@ -283,11 +321,10 @@ namespace masonry
                                  const bool   bricks_assembled,
                                  const double time_step)
       {
-        System                          &system   = parts.system;
-        const BrickMaterial             &material = parts.material;
-        const bool                       linear   = material.is_linear();
-        const System::Vector            &ghosted  = system.ghosted;
-        const FEValuesExtractors::Vector displacement(0);
+        System               &system   = parts.system;
+        const BrickMaterial  &material = parts.material;
+        const bool            linear   = material.is_linear();
+        const System::Vector &ghosted  = system.ghosted;
         // the cells' laws on the threads, the sums into f_int and the
         // matrix in the order of the cells (results independent of the
         // number of threads)
@@ -296,29 +333,22 @@ namespace masonry
                                 LocalContribution &copy) {
           const unsigned int c = cell->active_cell_index();
           copy.active = cell->is_locally_owned() && !parts.specimen.deleted[c];
+          copy.index  = c;
           if (!copy.active)
             return;
           cell->get_dof_indices(copy.dofs);
           for (unsigned int i = 0; i < 24; ++i)
             s.ue[i] = ghosted[copy.dofs[i]];
-          bool             elastic = linear;
-          const BrickPoint point   = brick_point(c, time_step);
+          bool                elastic  = linear;
+          const BrickPoint    point    = brick_point(c, time_step);
+          const CellGeometry &geometry = geometries[geometry_of_cell[c]];
           if (!linear)
             {
-              s.fe_values.reinit(cell);
+              cell_strains(geometry, s.ue, s.strain);
               elastic = true;
-              for (unsigned int q = 0; q < 8; ++q)
-                {
-                  s.strain[q] = 0;
-                  for (unsigned int i = 0; i < 24; ++i)
-                    s.strain[q] +=
-                      s.ue[i] *
-                      s.fe_values[displacement].symmetric_gradient(i, q);
-                  if (elastic &&
-                      !parts.integrator.brick_is_elastic(
-                        material, s.strain[q], parts.bricks, 8 * c + q, point))
-                    elastic = false;
-                }
+              for (unsigned int q = 0; q < 8 && elastic; ++q)
+                elastic = parts.integrator.brick_is_elastic(
+                  material, s.strain[q], parts.bricks, 8 * c + q, point);
             }
           if (elastic)
             {
@@ -333,7 +363,7 @@ namespace masonry
             {
               copy.cached = nullptr;
               brick_cell(
-                s.fe_values, s.strain, c, point, with_matrix, copy.f, copy.k);
+                geometry, s.strain, c, point, with_matrix, copy.f, copy.k);
             }
           // a cell fading out before its deletion
           copy.fade = parts.specimen.fade[c];
@@ -356,12 +386,10 @@ namespace masonry
                 {
                   FullMatrix<double> k(*copy.cached);
                   k *= copy.fade;
-                  system.zero_constraints.distribute_local_to_global(
-                    k, copy.dofs, system.matrix);
+                  adder.add(CrsAdder::cell, copy.index, k, copy.dofs);
                 }
               else if (with_matrix && !bricks_assembled)
-                system.zero_constraints.distribute_local_to_global(
-                  *copy.cached, copy.dofs, system.matrix);
+                adder.add(CrsAdder::cell, copy.index, *copy.cached, copy.dofs);
               if (!linear)
                 ++statistics.n_elastic_cells;
               return;
@@ -369,20 +397,45 @@ namespace masonry
           ++statistics.n_material_cells;
           is_initial = false;
           if (with_matrix)
-            system.zero_constraints.distribute_local_to_global(copy.k,
-                                                               copy.dofs,
-                                                               system.matrix);
+            adder.add(CrsAdder::cell, copy.index, copy.k, copy.dofs);
         };
         WorkStream::run(system.dof_handler.begin_active(),
                         system.dof_handler.end(),
                         worker,
                         copier,
-                        BrickScratch(system.fe),
+                        BrickScratch(),
                         LocalContribution());
       }
 
       void
-      Assembler::brick_cell(const FEValues<3> &fe_values,
+      Assembler::cell_strains(
+        const CellGeometry                   &geometry,
+        const Vector<double>                 &ue,
+        std::array<SymmetricTensor<2, 3>, 8> &strain) const
+      {
+        // deal.II's value * symmetrize_single_row(c, g) summed over the
+        // shape functions in order, without its zero terms: (c, c) gets
+        // u g[c], (c, b) u (g[b] / 2); entries [00, 11, 22, 01, 02, 12]
+        static constexpr unsigned int off[3][3] = {{0, 3, 4},
+                                                   {3, 1, 5},
+                                                   {4, 5, 2}};
+        for (unsigned int q = 0; q < 8; ++q)
+          {
+            double e[6] = {0, 0, 0, 0, 0, 0};
+            for (unsigned int i = 0; i < 24; ++i)
+              {
+                const double        u = ue[i];
+                const unsigned int  a = component[i];
+                const Tensor<1, 3> &g = geometry.grad[q][i];
+                for (unsigned int b = 0; b < 3; ++b)
+                  e[off[a][b]] += b == a ? u * g[b] : u * (g[b] / 2);
+              }
+            strain[q] = SymmetricTensor<2, 3>(e);
+          }
+      }
+
+      void
+      Assembler::brick_cell(const CellGeometry &geometry,
                             const std::array<SymmetricTensor<2, 3>, 8> &strain,
                             const unsigned int                          c,
                             const BrickPoint                           &point,
@@ -390,10 +443,6 @@ namespace masonry
                             Vector<double>     &fe_local,
                             FullMatrix<double> &ke)
       {
-        std::array<Tensor<1, 3>, 24> grad;
-        std::array<unsigned int, 24> component;
-        for (unsigned int i = 0; i < 24; ++i)
-          component[i] = parts.system.fe.system_to_component_index(i).first;
         SymmetricTensor<2, 3> stress;
         SymmetricTensor<4, 3> C;
         fe_local = 0;
@@ -412,10 +461,10 @@ namespace masonry
             // gradient g_i, so stress : B_i = sigma[c_i] . g_i and
             // B_i : C : B_j = g_i . C[c_i][.][c_j][.] g_j (C has the minor
             // symmetries)
-            const double JxW = fe_values.JxW(q);
+            const double                        JxW  = geometry.JxW[q];
+            const std::array<Tensor<1, 3>, 24> &grad = geometry.grad[q];
             for (unsigned int i = 0; i < 24; ++i)
               {
-                grad[i] = fe_values.shape_grad_component(i, q, component[i]);
                 for (unsigned int b = 0; b < 3; ++b)
                   fe_local[i] += stress[component[i]][b] * grad[i][b] * JxW;
               }
@@ -427,22 +476,25 @@ namespace masonry
                 for (unsigned int k = 0; k < 3; ++k)
                   for (unsigned int e = 0; e < 3; ++e)
                     Cf[a][b][k][e] = C[a][b][k][e] * JxW;
+            // h[a][b][j] = sum_e C[a][b][c_j][e] g_j[e] JxW, by j last so
+            // that the sums below run along the rows of ke (vectorised)
+            double h[3][3][24];
             for (unsigned int j = 0; j < 24; ++j)
               {
-                // h[a][b] = sum_e C[a][b][c_j][e] g_j[e] JxW
-                double             h[3][3];
                 const unsigned int cj = component[j];
                 for (unsigned int a = 0; a < 3; ++a)
                   for (unsigned int b = 0; b < 3; ++b)
-                    h[a][b] = Cf[a][b][cj][0] * grad[j][0] +
-                              Cf[a][b][cj][1] * grad[j][1] +
-                              Cf[a][b][cj][2] * grad[j][2];
-                for (unsigned int i = 0; i < 24; ++i)
-                  {
-                    const double *hi = h[component[i]];
-                    ke(i, j) += hi[0] * grad[i][0] + hi[1] * grad[i][1] +
-                                hi[2] * grad[i][2];
-                  }
+                    h[a][b][j] = Cf[a][b][cj][0] * grad[j][0] +
+                                 Cf[a][b][cj][1] * grad[j][1] +
+                                 Cf[a][b][cj][2] * grad[j][2];
+              }
+            for (unsigned int i = 0; i < 24; ++i)
+              {
+                const double(&hi)[3][24] = h[component[i]];
+                const double g0 = grad[i][0], g1 = grad[i][1], g2 = grad[i][2];
+                double      *row = &ke(i, 0);
+                for (unsigned int j = 0; j < 24; ++j)
+                  row[j] += hi[0][j] * g0 + hi[1][j] * g1 + hi[2][j] * g2;
               }
           }
       }
@@ -531,8 +583,7 @@ namespace masonry
           if (copy.cached)
             {
               if (with_matrix)
-                system.zero_constraints.distribute_local_to_global(
-                  *copy.cached, dofs, system.matrix);
+                adder.add(CrsAdder::joint, copy.index, *copy.cached, dofs);
               ++statistics.n_elastic_interfaces;
               return;
             }
@@ -540,9 +591,7 @@ namespace masonry
           if (!copy.initial)
             is_initial = false;
           if (with_matrix)
-            system.zero_constraints.distribute_local_to_global(copy.k,
-                                                               dofs,
-                                                               system.matrix);
+            adder.add(CrsAdder::joint, copy.index, copy.k, dofs);
         };
         WorkStream::run(items.cbegin(),
                         items.cend(),
@@ -626,18 +675,12 @@ namespace masonry
           {
             struct BrickScratch : Scratch
             {
-              explicit BrickScratch(const FiniteElement<3> &fe)
-                : fe_values(fe, QGauss<3>(2), update_gradients)
-              {}
-              BrickScratch(const BrickScratch &other)
-                : BrickScratch(other.fe_values.get_fe())
-              {}
-              FEValues<3>                        fe_values;
-              std::vector<SymmetricTensor<2, 3>> eps =
-                std::vector<SymmetricTensor<2, 3>>(8);
+              std::vector<types::global_dof_index> dofs =
+                std::vector<types::global_dof_index>(24);
+              Vector<double>                       ue = Vector<double>(24);
+              std::array<SymmetricTensor<2, 3>, 8> eps;
             };
-            const FEValuesExtractors::Vector displacement(0);
-            const auto                       worker =
+            const auto worker =
               [&](const DoFHandler<3>::active_cell_iterator &cell,
                   BrickScratch                              &s,
                   Change                                    &change) {
@@ -647,9 +690,10 @@ namespace masonry
                   cell->is_locally_owned() && !parts.specimen.deleted[c];
                 if (!change.active)
                   return;
-                s.fe_values.reinit(cell);
-                s.fe_values[displacement].get_function_symmetric_gradients(
-                  ghosted, s.eps);
+                cell->get_dof_indices(s.dofs);
+                for (unsigned int i = 0; i < 24; ++i)
+                  s.ue[i] = ghosted[s.dofs[i]];
+                cell_strains(geometries[geometry_of_cell[c]], s.ue, s.eps);
                 BrickPoint            point = brick_point(c, time_step);
                 SymmetricTensor<2, 3> stress;
                 for (unsigned int q = 0; q < 8; ++q)
@@ -672,7 +716,7 @@ namespace masonry
                             system.dof_handler.end(),
                             worker,
                             gather,
-                            BrickScratch(system.fe),
+                            BrickScratch(),
                             Change());
           }
         const auto                     &faces = parts.joints.faces;

@@ -16,6 +16,7 @@
 #include <map>
 #include <string>
 
+#include "crs_adder.h"
 #include "integrator.h"
 #include "interface_element.h"
 #include "joints.h"
@@ -144,9 +145,29 @@ namespace masonry
         assemble_bricks(const bool   with_matrix,
                         const bool   bricks_assembled,
                         const double time_step);
+        /**
+         * What a cell's assembly needs of the finite element at its 8 Gauss
+         * points: the gradient of the nonzero component of each shape
+         * function and JxW. The mesh does not move, so it is computed once
+         * (make_elastic_caches()), one copy for the cells whose values are
+         * the same bit for bit.
+         */
+        struct CellGeometry
+        {
+          std::array<std::array<dealii::Tensor<1, 3>, 24>, 8> grad;
+          std::array<double, 8>                               JxW;
+        };
+        /** The strains at the Gauss points of a cell from its DoF values
+         * @p ue, summed as deal.II sums symmetric gradients (the same
+         * numbers bit for bit). */
+        void
+        cell_strains(
+          const CellGeometry                           &geometry,
+          const dealii::Vector<double>                 &ue,
+          std::array<dealii::SymmetricTensor<2, 3>, 8> &strain) const;
         /** One brick cell's force and tangent from its point responses. */
         void
-        brick_cell(const dealii::FEValues<3> &fe_values,
+        brick_cell(const CellGeometry                                 &geometry,
                    const std::array<dealii::SymmetricTensor<2, 3>, 8> &strain,
                    const unsigned int                                  c,
                    const BrickPoint                                   &point,
@@ -183,10 +204,17 @@ namespace masonry
         /** Cell matrices of the elastic bricks, by cell shape. */
         std::map<std::vector<long>, dealii::FullMatrix<double>> cell_matrices;
         std::vector<const dealii::FullMatrix<double> *>         matrix_of_cell;
+        /** The geometries of the cells (index by active cell). */
+        std::vector<CellGeometry> geometries;
+        std::vector<unsigned int> geometry_of_cell;
+        /** The nonzero component of each shape function. */
+        std::array<unsigned int, 24> component;
         /** Elastic matrices of the interfaces, by (axis, area). */
         std::map<std::pair<unsigned int, long>, dealii::FullMatrix<double>>
                                                         interface_matrices;
         std::vector<const dealii::FullMatrix<double> *> matrix_of_interface;
+        /** Sums the element matrices into the tangent. */
+        CrsAdder adder;
       };
     } // namespace model
   }   // namespace brickwork

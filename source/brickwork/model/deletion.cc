@@ -9,6 +9,8 @@
 
 #include <algorithm>
 
+#include "one_thread.h"
+
 namespace masonry
 {
   namespace brickwork
@@ -96,8 +98,10 @@ namespace masonry
         faded = 0;
         if (settings.deletion_strain <= 0)
           return 0;
-        const double opening  = settings.deletion_fade_opening;
-        const double crushing = settings.deletion_crushing_length;
+        // the same numbers on one assembly thread as on many (OneThread)
+        const OneThread one_thread;
+        const double    opening  = settings.deletion_fade_opening;
+        const double    crushing = settings.deletion_crushing_length;
         // maximum principal strain of the cell-averaged strain
         system.ghosted = system.u;
         QGauss<3>                                    quadrature(2);
