@@ -4,7 +4,9 @@
  * plasticity, f_b = 20 MPa) with two 10 mm mortar layers (damage
  * plasticity, f_m = 5 MPa, E_m = 1 GPa), the `composite' law with stiff
  * contact penalties as the bond, splitting interfaces through the units,
- * IMPL-EX and element deletion, loaded until the mortar layers flow. The run on
+ * IMPL-EX and element deletion, the units' tensile measure averaged over
+ * `Nonlocal length' = 30 mm (its points' neighbours lie in cells of both
+ * ranks), loaded until the mortar layers flow. The run on
  * all ranks and the run on rank 0 alone give the same curve (stress, largest
  * joint damage and the units' and mortar's largest damages), and a run stopped
  * by `Maximum steps' and resumed from its checkpoint (on all ranks) equals the
@@ -44,6 +46,7 @@ namespace
                               "    set Tensile strength = 2e6\n"
                               "    set Tensile fracture energy = 80\n"
                               "    set Maximum damage = 0.95\n"
+                              "    set Nonlocal length = 0.03\n"
                               "  end\n"
                               "end\n"
                               "subsection Mortar material\n"

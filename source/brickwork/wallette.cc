@@ -173,6 +173,10 @@ namespace masonry
                                  joints,
                                  settings.specimen);
 
+        AssertThrow(material.nonlocal_length() == 0 ||
+                      settings.integrator.implex,
+                    ExcMessage("Brick material: `Nonlocal length' > 0 needs "
+                               "`Damage integration = implex'"));
         // point states: 8 per cell, 4 per joint face, as the laws declare
         std::vector<unsigned int> owned_bricks, owned_joints, owned_splitting;
         for (const auto &cell : triangulation.active_cell_iterators())

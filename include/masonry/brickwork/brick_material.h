@@ -12,6 +12,8 @@
 
 #include <deal.II/base/symmetric_tensor.h>
 
+#include <array>
+
 namespace masonry
 {
   namespace brickwork
@@ -41,6 +43,15 @@ namespace masonry
        * model), 1 the mortar of the detailed model.
        */
       unsigned int region = 0;
+      /**
+       * Factors on the law's tensile and compressive measures
+       * (dimensionless, 1: local): with a nonlocal length (nonlocal_length()
+       * > 0) the model sets them, in the implicit update after an IMPL-EX
+       * step, to the ratios of the nonlocal averages of nonlocal_measures()
+       * around the point to their local values, so that the law sees the
+       * averaged measures.
+       */
+      double tensile_factor = 1, compressive_factor = 1;
     };
 
     /**
@@ -204,6 +215,30 @@ namespace masonry
       /** See compressive_strength(). */
       virtual double
       tensile_fracture_energy() const;
+
+      /**
+       * Radius R (m) of the nonlocal average of the units' tensile measure
+       * (0: local, the default). See BrickPoint::tensile_factor.
+       */
+      virtual double
+      nonlocal_length() const
+      {
+        return 0;
+      }
+
+      /**
+       * The tensile and compressive measures (Pa, >= 0) that the nonlocal
+       * average acts on, at the trial state of @p strain from @p old_state
+       * (0 by default).
+       */
+      virtual std::array<double, 2>
+      nonlocal_measures(const dealii::SymmetricTensor<2, 3> &strain,
+                        ConstStateView                       old_state,
+                        const BrickPoint                    &point) const
+      {
+        (void)strain, (void)old_state, (void)point;
+        return {{0., 0.}};
+      }
     };
   } // namespace brickwork
 } // namespace masonry

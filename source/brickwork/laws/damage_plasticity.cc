@@ -202,6 +202,22 @@ namespace masonry
         strain, unpack(old), unpack(older), ratio_t, stress, nullptr);
     }
 
+    std::array<double, 2>
+    DamagePlasticityBrick::nonlocal_measures(
+      const SymmetricTensor<2, 3> &strain,
+      ConstStateView               old_state,
+      const BrickPoint &) const
+    {
+      SymmetricTensor<2, 3> plus, minus;
+      double                tau_t, tau_c;
+      split(effective(strain - unpack(old_state).plastic_strain),
+            plus,
+            minus,
+            tau_t,
+            tau_c);
+      return {{tau_t, tau_c}};
+    }
+
     bool
     DamagePlasticityBrick::is_elastic(const SymmetricTensor<2, 3> &strain,
                                       const State                 &old,
@@ -277,6 +293,8 @@ namespace masonry
                                 const double           intact_c,
                                 const double           d_t,
                                 const double           phi,
+                                const double           rho_t,
+                                const double           rho_c,
                                 const double           T,
                                 State                 &updated,
                                 SymmetricTensor<2, 3> &plus,
@@ -292,7 +310,7 @@ namespace masonry
       SymmetricTensor<2, 3>       p, m;
       double                      tt, tc;
       auto                        excess = [&](const double lambda) {
-        split(s0 - lambda * G, p, m, tt, tc);
+        split(s0 - lambda * G, p, m, tt, tc, rho_t, rho_c);
         const double share = interaction_share(tc, tt, 1 - intact_c, d_t, phi);
         return tc / (1 - share) - T;
       };
@@ -304,7 +322,7 @@ namespace masonry
         lambda = illinois_root(excess, a, b, fa, fb, 1e-12 * T, 0., 100);
       updated.plastic_strain +=
         lambda * ((1 + nu_p) / E * minus - nu_p / E * dealii::trace(minus) * I);
-      split(s0 - lambda * G, plus, minus, tau_t, tau_c);
+      split(s0 - lambda * G, plus, minus, tau_t, tau_c, rho_t, rho_c);
     }
 
     SymmetricTensor<2, 3>
@@ -387,9 +405,12 @@ namespace masonry
                                  SymmetricTensor<2, 3>       &plus,
                                  SymmetricTensor<2, 3>       &minus,
                                  double                      &tau_t,
-                                 double                      &tau_c) const
+                                 double                      &tau_c,
+                                 const double                 rho_t,
+                                 const double                 rho_c) const
     {
-      plus            = positive_part(s, nullptr, &tau_t);
+      plus = positive_part(s, nullptr, &tau_t);
+      tau_t *= rho_t;
       minus           = s - plus;
       const double I1 = dealii::trace(minus);
       const double J2 =
@@ -401,6 +422,7 @@ namespace masonry
                        (std::sqrt(3 * J2) + alpha * I1 +
                         gamma * std::min(s_max, 0.)) /
                          (1 - alpha));
+      tau_c *= rho_c;
     }
 
     double
@@ -502,6 +524,8 @@ namespace masonry
                                         const double           d_c,
                                         const double           l,
                                         const double           phi,
+                                        const double           rho_t,
+                                        const double           rho_c,
                                         State                 &updated,
                                         SymmetricTensor<2, 3> &plus,
                                         SymmetricTensor<2, 3> &minus,
@@ -525,7 +549,7 @@ namespace masonry
         eig[1].first <= nu / (1 - nu) * eig[0].first ?
           SymmetricTensor<2, 3>(dealii::symmetrize(
             dealii::outer_product(eig[0].second, eig[0].second))) :
-          SymmetricTensor<2, 3>(plus / tau_t);
+          SymmetricTensor<2, 3>(plus * (rho_t / tau_t));
       const SymmetricTensor<2, 3> G = effective(N);
       SymmetricTensor<2, 3>       p, m;
       double                      tt, tc;
@@ -540,9 +564,9 @@ namespace masonry
       auto excess = [&](const double e) {
         const EnvelopePoint         env = tension(e, l, phi);
         const SymmetricTensor<2, 3> s   = s0 - (env.plastic - p_old) * G;
-        split(s, p, m, tt, tc);
+        split(s, p, m, tt, tc, rho_t, rho_c);
         const double share = interaction_share(tc, tt, d_c, env.damage, phi);
-        const double s1    = tt > 0 ? tt : dealii::eigenvalues(s)[0];
+        const double s1    = tt > 0 ? tt : rho_t * dealii::eigenvalues(s)[0];
         return s1 / (1 - share) - E * (e - env.plastic);
       };
       // the root lies below the envelope strain of the elastic flow, e_trial
@@ -560,7 +584,7 @@ namespace masonry
         e = illinois_root(excess, a, b, fa, fb, 1e-13 * phi * f_t, 1e-15, 200);
       const double dp = tension(e, l, phi).plastic - p_old;
       updated.plastic_strain += dp * N;
-      split(s0 - dp * G, plus, minus, tau_t, tau_c);
+      split(s0 - dp * G, plus, minus, tau_t, tau_c, rho_t, rho_c);
       return e;
     }
 
@@ -571,12 +595,20 @@ namespace masonry
                                   State                       &updated,
                                   SymmetricTensor<2, 3>       &stress) const
     {
-      const double phi = point.strength_factor;
-      const double l   = point.characteristic_length;
-      updated          = old;
+      const double phi   = point.strength_factor;
+      const double l     = point.characteristic_length;
+      const double rho_t = point.tensile_factor;
+      const double rho_c = point.compressive_factor;
+      updated            = old;
       SymmetricTensor<2, 3> plus, minus;
       double                tau_t, tau_c;
-      split(effective(strain - old.plastic_strain), plus, minus, tau_t, tau_c);
+      split(effective(strain - old.plastic_strain),
+            plus,
+            minus,
+            tau_t,
+            tau_c,
+            rho_t,
+            rho_c);
       double d_t = old.kappa_t > 0 ? tension(old.kappa_t, l, phi).damage : 0.;
       double d_c =
         old.kappa_c > 0 ? compression(old.kappa_c, l, phi).damage : 0.;
@@ -637,6 +669,8 @@ namespace masonry
                        1 - env.damage,
                        d_t,
                        phi,
+                       rho_t,
+                       rho_c,
                        beta * T,
                        updated,
                        plus,
@@ -669,6 +703,8 @@ namespace masonry
                                                       d_c,
                                                       l,
                                                       phi,
+                                                      rho_t,
+                                                      rho_c,
                                                       updated,
                                                       plus,
                                                       minus,

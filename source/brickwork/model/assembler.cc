@@ -654,6 +654,23 @@ namespace masonry
           error = std::max(error, change.error);
         };
         const BrickMaterial &material = parts.material;
+        // the units' factors of the nonlocal average (empty: local)
+        std::array<std::vector<double>, 2> rho;
+        if (material.nonlocal_length() > 0)
+          {
+            if (!nonlocal)
+              nonlocal = std::make_unique<NonlocalAverage>(
+                make_unit_average(system.dof_handler,
+                                  parts.specimen,
+                                  material.nonlocal_length()));
+            rho = nonlocal_factors(*nonlocal,
+                                   material,
+                                   system.dof_handler,
+                                   ghosted,
+                                   parts.bricks,
+                                   parts.specimen,
+                                   system.comm);
+          }
         if (!material.is_linear())
           {
             struct BrickScratch : Scratch
@@ -677,11 +694,16 @@ namespace masonry
                 for (unsigned int i = 0; i < 24; ++i)
                   s.ue[i] = ghosted[s.dofs[i]];
                 cell_strains(geometries[geometry_of_cell[c]], s.ue, s.eps);
-                const BrickPoint      point = brick_point(c, time_step);
+                BrickPoint            point = brick_point(c, time_step);
                 SymmetricTensor<2, 3> stress;
                 for (unsigned int q = 0; q < 8; ++q)
                   {
                     const unsigned int p = 8 * c + q;
+                    if (!rho[0].empty())
+                      {
+                        point.tensile_factor     = rho[0][p];
+                        point.compressive_factor = rho[1][p];
+                      }
                     material.update_state(s.eps[q],
                                           parts.bricks.old(p),
                                           point,

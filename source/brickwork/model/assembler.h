@@ -20,6 +20,7 @@
 #include "integrator.h"
 #include "interface_element.h"
 #include "joints.h"
+#include "nonlocal.h"
 #include "point_states.h"
 #include "specimen.h"
 #include "system.h"
@@ -185,6 +186,9 @@ namespace masonry
 
         AssemblyParts    parts;
         InterfaceElement interface_element;
+        /** The units' nonlocal average (`Nonlocal length' > 0; built at
+         * the first update_states()). */
+        std::unique_ptr<NonlocalAverage> nonlocal;
         /** Non-finite numbers met in the last assembly or update, bits:
          * bricks' stresses, joints' tractions, bricks' damages, joints'
          * damages. */

@@ -51,7 +51,29 @@ namespace masonry
         , mortar(mortar)
         , n_unit(n_state_values(variables(unit)))
         , n_mortar(n_state_values(variables(mortar)))
-      {}
+      {
+        AssertThrow(mortar.nonlocal_length() == 0,
+                    dealii::ExcMessage(
+                      "Mortar material: `Nonlocal length' must be 0 (the "
+                      "nonlocal average acts on the units only)"));
+      }
+
+      double
+      RegionMaterial::nonlocal_length() const
+      {
+        return unit.nonlocal_length();
+      }
+
+      std::array<double, 2>
+      RegionMaterial::nonlocal_measures(const SymmetricTensor<2, 3> &strain,
+                                        ConstStateView               old,
+                                        const BrickPoint &point) const
+      {
+        const Part p = part(point.region);
+        return p.law->nonlocal_measures(strain,
+                                        slice(old, p.offset, p.size),
+                                        point);
+      }
 
       RegionMaterial::Part
       RegionMaterial::part(const unsigned int region) const

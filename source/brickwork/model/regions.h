@@ -92,6 +92,13 @@ namespace masonry
         elastic_stiffness() const override;
         dealii::SymmetricTensor<4, 3>
         elastic_stiffness_at(const BrickPoint &point) const override;
+        /** The units' (the mortar's must be 0). */
+        double
+        nonlocal_length() const override;
+        std::array<double, 2>
+        nonlocal_measures(const dealii::SymmetricTensor<2, 3> &strain,
+                          ConstStateView                       old,
+                          const BrickPoint &point) const override;
         /** The units' strengths (the splitting interfaces). */
         double
         compressive_strength() const override;

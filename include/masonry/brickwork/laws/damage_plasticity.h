@@ -68,7 +68,14 @@
  * - `Plastic Poisson's ratio' nu_p: the compressive plastic strain grows
  *   along C_p^-1 : s- (compliance with E0, nu_p) instead of C0^-1 : s-,
  *   with the multiplier from a scalar root search (flow()); a confined
- *   mortar keeps expanding laterally only with nu_p > p / (|sigma_1| + p).
+ *   mortar keeps expanding laterally only with nu_p > p / (|sigma_1| + p);
+ * - `Nonlocal length' R: the measures tau_t and tau_c, wherever they enter
+ *   (the returns, the interaction's utilisations), are multiplied by
+ *   BrickPoint::tensile_factor and compressive_factor, which the model sets
+ *   to the ratios of the nonlocal averages of the trial measures over a
+ *   sphere of radius R within the unit to their local values
+ *   (model/nonlocal.h); at the trial state the law sees the averaged
+ *   measures, during the return they scale with the local ones.
  */
 #ifndef masonry_brickwork_laws_damage_plasticity_h
 #define masonry_brickwork_laws_damage_plasticity_h
@@ -200,6 +207,19 @@ namespace masonry
         return G_f;
       }
 
+      double
+      nonlocal_length() const override
+      {
+        return nonlocal_radius;
+      }
+
+      /** tau_t and tau_c of the trial effective stress C0 : (strain -
+       * e_p,old). */
+      std::array<double, 2>
+      nonlocal_measures(const SymmetricTensor<2, 3> &strain,
+                        ConstStateView               old_state,
+                        const BrickPoint            &point) const override;
+
       std::vector<DerivedValue>
       derived_values() const override;
 
@@ -293,6 +313,8 @@ namespace masonry
            const double           intact_c,
            const double           d_t,
            const double           phi,
+           const double           rho_t,
+           const double           rho_c,
            const double           T,
            State                 &updated,
            SymmetricTensor<2, 3> &plus,
@@ -323,6 +345,8 @@ namespace masonry
                    const double           d_c,
                    const double           l,
                    const double           phi,
+                   const double           rho_t,
+                   const double           rho_c,
                    State                 &updated,
                    SymmetricTensor<2, 3> &plus,
                    SymmetricTensor<2, 3> &minus,
@@ -356,13 +380,16 @@ namespace masonry
                     SymmetricTensor<4, 3>       *derivative,
                     double                      *largest = nullptr) const;
 
-      /** Spectral split of @p s and the equivalent stresses. */
+      /** Spectral split of @p s and the equivalent stresses, times @p rho_t
+       * and @p rho_c (BrickPoint::tensile_factor, compressive_factor). */
       void
       split(const SymmetricTensor<2, 3> &s,
             SymmetricTensor<2, 3>       &plus,
             SymmetricTensor<2, 3>       &minus,
             double                      &tau_t,
-            double                      &tau_c) const;
+            double                      &tau_c,
+            const double                 rho_t = 1,
+            const double                 rho_c = 1) const;
 
       /**
        * The share m = min(u_c, u_t, 1/2) of the tension-compression
@@ -445,6 +472,8 @@ namespace masonry
       double nu_p       = 0.15;
       /** `Confinement coefficient' and Lubliner's gamma from it. */
       double k_confinement = 0, gamma = 0;
+      /** `Nonlocal length' (m, 0: local). */
+      double nonlocal_radius = 0;
       /** The initial stiffness. */
       SymmetricTensor<4, 3> C0;
     };
