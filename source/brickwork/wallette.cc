@@ -24,6 +24,7 @@
 #include <sstream>
 
 #include "model/assembler.h"
+#include "model/bounds.h"
 #include "model/checkpoint.h"
 #include "model/deletion.h"
 #include "model/integrator.h"
@@ -439,7 +440,18 @@ namespace masonry
                      1.) *
           (1 - 1e-9);
         // the state of the last converged step is bad: not written
-        bool           bad_state = false;
+        bool bad_state = false;
+        // the physical bound on the platen stress (model/bounds.h)
+        double bound_strength = 0, bound_modulus = 0;
+        for (const BrickMaterial *m : {&material, mortar})
+          if (m != nullptr)
+            {
+              bound_strength =
+                std::max(bound_strength, m->compressive_strength());
+              const auto C = m->elastic_stiffness();
+              for (unsigned int i = 0; i < 3; ++i)
+                bound_modulus = std::max(bound_modulus, C[i][i][i][i]);
+            }
         System::Vector u_converged(system.u);
         // along the direction: positive displacement is the loading sense
         while (progress.segment < legs.size())
@@ -603,6 +615,19 @@ namespace masonry
                   likely_entries("bricks") + " and " +
                   likely_entries("joints") +
                   "; results up to the step before are written";
+                pcout << "Stopped: " << message << "\n";
+                break;
+              }
+            const std::string runaway = runaway_problem(curve.back().stress,
+                                                        curve.back().strain,
+                                                        bound_strength,
+                                                        bound_modulus);
+            if (!runaway.empty())
+              {
+                status  = "failed";
+                message = runaway + " (step " +
+                          Utilities::to_string(progress.step) +
+                          "); results up to there are written";
                 pcout << "Stopped: " << message << "\n";
                 break;
               }

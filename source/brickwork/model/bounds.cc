@@ -1,0 +1,42 @@
+#include "bounds.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace masonry
+{
+  namespace brickwork
+  {
+    namespace model
+    {
+      double
+      stress_bound(const double strength,
+                   const double modulus,
+                   const double strain)
+      {
+        return stress_bound_factor *
+               (std::abs(strength) +
+                std::abs(modulus) * (std::abs(strain) + 1e-4));
+      }
+
+      std::string
+      runaway_problem(const double stress,
+                      const double strain,
+                      const double strength,
+                      const double modulus)
+      {
+        const double bound = stress_bound(strength, modulus, strain);
+        if (std::abs(stress) <= bound)
+          return "";
+        std::ostringstream m;
+        m << "the solution ran away: the platen stress " << stress * 1e-6
+          << " MPa at strain " << strain << " is more than "
+          << stress_bound_factor << " x (the largest compressive strength "
+          << strength * 1e-6 << " MPa + the stiffest constrained modulus "
+          << modulus * 1e-9 << " GPa x (|strain| + 1e-4)) = " << bound * 1e-6
+          << " MPa, which no wallette of these materials can carry";
+        return m.str();
+      }
+    } // namespace model
+  }   // namespace brickwork
+} // namespace masonry
