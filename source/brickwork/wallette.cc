@@ -288,6 +288,8 @@ namespace masonry
                 !specimen.deleted[cell->active_cell_index()])
               for (unsigned int q = 0; q < 8; ++q)
                 bricks.accept(8 * cell->active_cell_index() + q, older);
+        // the deletion and the output evaluate the law with them
+        specimen.nonlocal_factors = assembler->nonlocal_factors();
       }
 
       /** The entries to look at when @p stage (Assembler::non_finite(),
