@@ -20,8 +20,7 @@
  *     compressive_factor rho the compressive envelope strain kappa_c leaves
  *     0 where rho tau_c = `Elastic limit ratio' f_c (rho = 0.5, 1, 2; both
  *     `Tensile plastic flow' values; 0.1 % below: nothing, 0.1 % above:
- *     onset); with both factors 1 the law is the local one (the same
- *     stress as without the entry, to round-off).
+ *     onset).
  */
 #include <masonry/brickwork/brick_material.h>
 #include <masonry/core/plugins.h>
@@ -175,15 +174,6 @@ namespace
               "the compressive envelope starts at rho tau_c = 0.4 f_c "
               "(rho = 0.5, 1, 2; +-0.1 %; " +
                 flow + ")");
-        point.compressive_factor = 1;
-        const auto local = unit("set Tensile plastic flow = " + flow + "\n");
-        SymmetricTensor<2, 3> s_nonlocal, s_local;
-        point.tensile_factor = 1;
-        strain[0][0]         = 3 * f_t / (lambda + 2 * mu);
-        law->update_state(strain, old, point, updated, s_nonlocal);
-        local->update_state(strain, old, point, updated, s_local);
-        check((s_nonlocal - s_local).norm() <= 1e-9 * s_local.norm(),
-              "both factors 1: the local law (" + flow + ")");
       }
   }
 } // namespace

@@ -103,10 +103,13 @@ namespace brickwork_tests
    * brick between laterally fixed platens, damage-plasticity bricks,
    * bilinear joints, 10 % strength scatter, deletion at 0.005, IMPL-EX,
    * cycled to 0.002, 0.004, 0.006, 0.008 in 40 steps. @p extra: further
-   * Wallette entries (the linear solver and solver options).
+   * Wallette entries (the linear solver and solver options);
+   * @p damage_plasticity: further entries of the bricks' `Damage
+   * plasticity' subsection.
    */
   inline std::string
-  cracked_cyclic_wallette(const std::string &extra)
+  cracked_cyclic_wallette(const std::string &extra,
+                          const std::string &damage_plasticity = "")
   {
     return prm(
       "set Courses = 7\nset Length in bricks = 2\n"
@@ -122,11 +125,12 @@ namespace brickwork_tests
       "subsection Bond\nset Pattern = stretcher\nend\n"
       "subsection Brick material\nset Model = damage plasticity\n"
       "subsection Damage plasticity\nset Plastic strain ratio = 0.7\n"
-      "set Tensile plastic strain ratio = 0.1\nset Maximum damage = 0.95\n"
-      "end\nend\n"
-      "subsection Interface law\nset Law = bilinear\n"
-      "set Normal stiffness = 2.5e11\nset Shear stiffness = 1.03e11\n"
-      "end\n");
+      "set Tensile plastic strain ratio = 0.1\nset Maximum damage = 0.95\n" +
+        damage_plasticity +
+        "end\nend\n"
+        "subsection Interface law\nset Law = bilinear\n"
+        "set Normal stiffness = 2.5e11\nset Shear stiffness = 1.03e11\n"
+        "end\n");
   }
 
   /**

@@ -12,6 +12,8 @@
 #include <algorithm>
 #include <map>
 
+#include "one_thread.h"
+
 namespace masonry
 {
   namespace brickwork
@@ -82,7 +84,9 @@ namespace masonry
         std::vector<unsigned int> group(8 * n_cells,
                                         numbers::invalid_unsigned_int);
         std::vector<char>         mine(8 * n_cells, 0);
-        FEValues<3>               fe_values(dof_handler.get_fe(),
+        // the same points on one assembly thread as on many (OneThread)
+        const OneThread one_thread;
+        FEValues<3>     fe_values(dof_handler.get_fe(),
                               QGauss<3>(2),
                               update_quadrature_points | update_JxW_values);
         for (const auto &cell : dof_handler.active_cell_iterators())
@@ -113,8 +117,10 @@ namespace masonry
       {
         const unsigned int n = bricks.n_points();
         // tau_t of the points, then tau_c
-        std::vector<double>                local(2 * n, 0.), measure(2 * n);
-        std::vector<char>                  alive(n, 0);
+        std::vector<double> local(2 * n, 0.), measure(2 * n);
+        std::vector<char>   alive(n, 0);
+        // the same strains on one assembly thread as on many (OneThread)
+        const OneThread                    one_thread;
         FEValues<3>                        fe_values(dof_handler.get_fe(),
                               QGauss<3>(2),
                               update_gradients);
