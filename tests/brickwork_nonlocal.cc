@@ -21,6 +21,8 @@
  *     0 where rho tau_c = `Elastic limit ratio' f_c (rho = 0.5, 1, 2; both
  *     `Tensile plastic flow' values; 0.1 % below: nothing, 0.1 % above:
  *     onset).
+ * (c) converged_stress() (what the deletion and solution.pvd read) uses
+ *     the step's factors, see converged_checks().
  */
 #include <masonry/brickwork/brick_material.h>
 #include <masonry/core/plugins.h>
@@ -31,6 +33,7 @@
 #include <cmath>
 #include <iostream>
 
+#include "../source/brickwork/model/deletion.h"
 #include "../source/brickwork/model/nonlocal.h"
 #include "vault_tests.h"
 
@@ -176,6 +179,90 @@ namespace
                 flow + ")");
       }
   }
+
+  /**
+   * (c) What the deletion and the output read, converged_stress(): the
+   * law at the converged state with the step's factors
+   * (Specimen::nonlocal_factors). One cell of 8 points, rho_t = rho_c =
+   * 0.5 at every point. At a strain whose local measure is 1.5 times the
+   * onset (tension: (lambda + 2 mu) e = 1.5 f_t; compression: tau_c = 1.5
+   * x 0.4 f_c) the step's update leaves the point elastic (averaged
+   * measure 0.75 times the onset), so the stress is C0 : e exactly (with
+   * the local measures the point would crack or crush there, as the
+   * deletion and the output did before); at 3 f_t the update cracks the
+   * point, and its converged state at the same strain gives back the
+   * update's stress (no further loading; 1e-9 f_t).
+   */
+  void
+  converged_checks()
+  {
+    const double E = 10e9, nu = 0.15, f_t = 2e6;
+    const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu)),
+                 mu     = E / (2 * (1 + nu));
+    const double alpha  = 0.16 / 1.32;
+    // tau_c of e_xx = -1
+    const double tau_c_unit =
+      (2 * mu - alpha * (3 * lambda + 2 * mu)) / (1 - alpha);
+    for (const std::string flow : {"elastic", "crack"})
+      {
+        const auto   law = unit("set Nonlocal length = 0.03\n"
+                                "set Tensile plastic flow = " +
+                              flow + "\n");
+        unsigned int n   = 0;
+        for (const auto &v : law->state_variables())
+          n += v.n_components;
+        std::vector<double> initial(n);
+        law->initial_state(initial);
+        PointStates bricks;
+        bricks.initialize(8, initial, {});
+        Specimen specimen;
+        specimen.cell_length      = {0.05};
+        specimen.cell_factor      = {1.};
+        specimen.cell_region      = {0};
+        specimen.nonlocal_factors = {
+          {std::vector<double>(8, 0.5), std::vector<double>(8, 0.5)}};
+        double elastic_error = 0;
+        for (const double e :
+             {1.5 * f_t / (lambda + 2 * mu), -1.5 * 0.4 * 20e6 / tau_c_unit})
+          for (unsigned int q = 0; q < 8; ++q)
+            {
+              SymmetricTensor<2, 3> strain;
+              strain[0][0] = e;
+              SymmetricTensor<2, 3> expected =
+                lambda * e * unit_symmetric_tensor<3>();
+              expected[0][0] += 2 * mu * e;
+              elastic_error = std::max(
+                elastic_error,
+                (converged_stress(*law, strain, bricks, specimen, 0, q) -
+                 expected)
+                    .norm() /
+                  f_t);
+            }
+        check(elastic_error < 1e-9,
+              "local measure 1.5 x the onset, averaged 0.75 x: the "
+              "converged stress is C0 : e (1e-9 f_t; " +
+                flow + ")");
+        // the step's update at 3 f_t with the factors cracks the point
+        SymmetricTensor<2, 3> strain, stress;
+        strain[0][0] = 3 * f_t / (lambda + 2 * mu);
+        BrickPoint point;
+        point.characteristic_length = 0.05;
+        point.tensile_factor        = 0.5;
+        point.compressive_factor    = 0.5;
+        std::vector<double> updated(n), d(2);
+        law->update_state(strain, initial, point, updated, stress);
+        law->damages(updated, d);
+        bricks.initialize(8, updated, {});
+        const double error =
+          (converged_stress(*law, strain, bricks, specimen, 0, 3) - stress)
+            .norm() /
+          f_t;
+        check(d[0] > 0 && error < 1e-9,
+              "a point cracked by the step (averaged 1.5 f_t) gives back "
+              "the step's stress at its converged state (1e-9 f_t; " +
+                flow + ")");
+      }
+  }
 } // namespace
 
 int
@@ -184,4 +271,5 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   average_checks();
   law_checks();
+  converged_checks();
 }

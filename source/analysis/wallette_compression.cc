@@ -359,7 +359,9 @@ namespace masonry
                           Double(0),
                           "An unloading ends when the stress (platen force "
                           "/ gross area) has dropped to this, Pa (>= 0): "
-                          "the small target force of a test.");
+                          "the small target force of a test. Its last step "
+                          "is aimed at it; the leg ends at the first step "
+                          "at or below 1.01 times it.");
         prm.declare_entry(
           "Platen speed",
           "1e-5",

@@ -31,7 +31,9 @@ namespace masonry
                         "2",
                         Double(1),
                         "Factor on the step after an easy step "
-                        "(dimensionless, >= 1).");
+                        "(dimensionless, >= 1); also the largest factor "
+                        "by which IMPL-EX extrapolates the last step's "
+                        "changes of the internal variables.");
       prm.declare_entry("Maximum Newton iterations",
                         "20",
                         Integer(1, 1000),

@@ -655,7 +655,6 @@ namespace masonry
         };
         const BrickMaterial &material = parts.material;
         // the units' factors of the nonlocal average (empty: local)
-        std::array<std::vector<double>, 2> rho;
         if (material.nonlocal_length() > 0)
           {
             if (!nonlocal)
@@ -663,13 +662,13 @@ namespace masonry
                 make_unit_average(system.dof_handler,
                                   parts.specimen,
                                   material.nonlocal_length()));
-            rho = nonlocal_factors(*nonlocal,
-                                   material,
-                                   system.dof_handler,
-                                   ghosted,
-                                   parts.bricks,
-                                   parts.specimen,
-                                   system.comm);
+            rho = model::nonlocal_factors(*nonlocal,
+                                          material,
+                                          system.dof_handler,
+                                          ghosted,
+                                          parts.bricks,
+                                          parts.specimen,
+                                          system.comm);
           }
         if (!material.is_linear())
           {

@@ -111,6 +111,14 @@ namespace masonry
         double
         update_states(const Integrator &integrator, const double time_step);
 
+        /** The units' nonlocal factors of the last update_states() (per
+         * brick point: tensile, compressive; empty: local). */
+        const std::array<std::vector<double>, 2> &
+        nonlocal_factors() const
+        {
+          return rho;
+        }
+
         /** Cells were deleted: the kept matrices are no longer valid. */
         void
         invalidate();
@@ -189,6 +197,8 @@ namespace masonry
         /** The units' nonlocal average (`Nonlocal length' > 0; built at
          * the first update_states()). */
         std::unique_ptr<NonlocalAverage> nonlocal;
+        /** Its factors at the last update_states(). */
+        std::array<std::vector<double>, 2> rho;
         /** Non-finite numbers met in the last assembly or update, bits:
          * bricks' stresses, joints' tractions, bricks' damages, joints'
          * damages. */

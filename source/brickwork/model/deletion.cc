@@ -46,6 +46,38 @@ namespace masonry
       }
 
       SymmetricTensor<2, 3>
+      converged_stress(const BrickMaterial         &material,
+                       const SymmetricTensor<2, 3> &eps,
+                       const PointStates           &bricks,
+                       const Specimen              &specimen,
+                       const unsigned int           c,
+                       const unsigned int           q)
+      {
+        std::vector<double> initial(bricks.n_values()),
+          scratch(bricks.n_values());
+        const bool linear = material.is_linear();
+        if (linear)
+          material.initial_state(initial);
+        BrickPoint point;
+        point.characteristic_length = specimen.cell_length[c];
+        point.strength_factor       = specimen.cell_factor[c];
+        point.region                = specimen.cell_region[c];
+        // the factors the step evaluated the law with: with the local
+        // measures instead, a point that the average keeps inside its
+        // envelope would crack or crush here
+        specimen.apply_nonlocal_factors(8 * c + q, point);
+        SymmetricTensor<2, 3> sigma;
+        material.update_state(eps,
+                              linear ?
+                                ConstStateView(initial.data(), initial.size()) :
+                                bricks.old(8 * c + q),
+                              point,
+                              StateView(scratch.data(), scratch.size()),
+                              sigma);
+        return sigma;
+      }
+
+      SymmetricTensor<2, 3>
       cell_stress(const DoFHandler<3>::active_cell_iterator &cell,
                   const System::Vector                      &ghosted,
                   const BrickMaterial                       &material,
@@ -58,29 +90,12 @@ namespace masonry
         fe_values.reinit(cell);
         fe_values[FEValuesExtractors::Vector(0)]
           .get_function_symmetric_gradients(ghosted, eps);
-        const bool          linear = material.is_linear();
-        std::vector<double> initial(bricks.n_values()),
-          scratch(bricks.n_values());
-        material.initial_state(initial);
-        BrickPoint point;
-        point.characteristic_length = specimen.cell_length[c];
-        point.strength_factor       = specimen.cell_factor[c];
-        point.region                = specimen.cell_region[c];
-        SymmetricTensor<2, 3> mean, sigma;
+        SymmetricTensor<2, 3> mean;
         double                volume = 0;
         for (unsigned int q = 0; q < eps.size(); ++q)
           {
-            // from the converged state at the converged strain: the
-            // stress of the step, no further loading
-            const unsigned int p = eps.size() * c + q;
-            material.update_state(eps[q],
-                                  linear ? ConstStateView(initial.data(),
-                                                          initial.size()) :
-                                           bricks.old(p),
-                                  point,
-                                  StateView(scratch.data(), scratch.size()),
-                                  sigma);
-            mean += sigma * fe_values.JxW(q);
+            mean += converged_stress(material, eps[q], bricks, specimen, c, q) *
+                    fe_values.JxW(q);
             volume += fe_values.JxW(q);
           }
         return specimen.fade[c] * mean / volume;

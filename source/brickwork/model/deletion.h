@@ -58,6 +58,22 @@ namespace masonry
                   const Specimen                                    &specimen,
                   dealii::FEValues<3>                               &fe_values);
 
+      /**
+       * The stress of brick point @p q of cell @p c at the strain @p eps
+       * from its converged state (the initial one for a linear material),
+       * with the cell's length, strength factor and region and the step's
+       * nonlocal factors (Specimen::nonlocal_factors): the stress the
+       * step left, no further loading, without the cell's fade. What the
+       * deletion and the output (solution.pvd) read.
+       */
+      dealii::SymmetricTensor<2, 3>
+      converged_stress(const BrickMaterial                 &material,
+                       const dealii::SymmetricTensor<2, 3> &eps,
+                       const PointStates                   &bricks,
+                       const Specimen                      &specimen,
+                       const unsigned int                   c,
+                       const unsigned int                   q);
+
       /** The DOFs in no remaining cell of @p specimen. */
       std::vector<dealii::types::global_dof_index>
       orphan_dofs(const System &system, const Specimen &specimen);

@@ -7,9 +7,13 @@
 #ifndef masonry_brickwork_model_specimen_h
 #define masonry_brickwork_model_specimen_h
 
+#include <masonry/brickwork/brick_material.h>
 #include <masonry/brickwork/wallette.h>
 
 #include <deal.II/grid/tria.h>
+
+#include <array>
+#include <vector>
 
 #include "joints.h"
 
@@ -47,6 +51,24 @@ namespace masonry
         std::vector<char>   face_deleted;
         /** Cells deleted so far. */
         unsigned int n_deleted = 0;
+        /** Per brick point (8 c + q): the units' nonlocal factors of the
+         * last IMPL-EX update (BrickPoint::tensile_factor, then
+         * compressive_factor; `Nonlocal length'), so that the deletion
+         * and the output evaluate the law at the converged state as the
+         * step did; empty: local. Not checkpointed: the update of the
+         * next step recomputes them before they are read. */
+        std::array<std::vector<double>, 2> nonlocal_factors;
+
+        /** The factors of brick point @p p into @p point (nothing if
+         * local). */
+        void
+        apply_nonlocal_factors(const unsigned int p, BrickPoint &point) const
+        {
+          if (nonlocal_factors[0].empty())
+            return;
+          point.tensile_factor     = nonlocal_factors[0][p];
+          point.compressive_factor = nonlocal_factors[1][p];
+        }
 
         /** Write or read the deletions (the factors follow from the
          * settings). */

@@ -20,6 +20,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "../model/deletion.h"
 #include "builtin.h"
 
 namespace masonry
@@ -131,10 +132,7 @@ namespace masonry
           FEValues<3> fe_values(view.system.fe, quadrature, update_gradients);
           std::vector<SymmetricTensor<2, 3>> eps(8);
           const FEValuesExtractors::Vector   displacement(0);
-          const unsigned int                 n_state = view.bricks.n_values();
-          std::vector<double>                initial(n_state), scratch(n_state),
-            values(reported.size());
-          material.initial_state(initial);
+          std::vector<double>                values(reported.size());
           for (const auto &cell :
                view.system.dof_handler.active_cell_iterators())
             if (cell->is_locally_owned())
@@ -154,30 +152,22 @@ namespace masonry
                 fe_values.reinit(cell);
                 fe_values[displacement].get_function_symmetric_gradients(
                   ghosted, eps);
-                BrickPoint point;
-                point.characteristic_length = view.specimen.cell_length[c];
-                point.strength_factor       = view.specimen.cell_factor[c];
-                point.region                = view.specimen.cell_region[c];
-                SymmetricTensor<2, 3> sigma, mean;
-                SymmetricTensor<4, 3> C;
+                SymmetricTensor<2, 3> mean;
                 for (unsigned int q = 0; q < 8; ++q)
                   {
-                    if (material.is_linear())
-                      material.evaluate(
-                        eps[q], initial, point, scratch, sigma, C);
-                    else
+                    // the stress the step left (the deletion reads the
+                    // same)
+                    mean +=
+                      view.specimen.fade[c] *
+                      model::converged_stress(
+                        material, eps[q], view.bricks, view.specimen, c, q) /
+                      8;
+                    if (!material.is_linear())
                       {
-                        // from the converged state at the converged
-                        // strain: no further loading, the stress of the
-                        // step
-                        const ConstStateView old = view.bricks.old(8 * c + q);
-                        material.evaluate(
-                          eps[q], old, point, scratch, sigma, C);
-                        material.report(old, values);
+                        material.report(view.bricks.old(8 * c + q), values);
                         for (unsigned int k = 0; k < values.size(); ++k)
                           fields[first_reported + k][c] += values[k] / 8;
                       }
-                    mean += view.specimen.fade[c] * sigma / 8;
                   }
                 const unsigned int ij[6][2] = {
                   {0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {0, 2}};
