@@ -18,8 +18,13 @@
  * sensitive to such differences (the IMPL-EX step control decides on
  * damage errors that differ in the last digits): the later cycle peaks
  * agree to 1 % of the peak. The reuse changes only the linear solves,
- * which GMRES does to 1e-10: with it every cycle peak is that of the
- * direct solves to 1e-6. The extrapolated predictor starts each step
+ * which GMRES does to 1e-10: with it the cycle peaks up to the peak are
+ * those of the direct solves to 1e-6, and the later ones, where the same
+ * sensitivity amplifies the 1e-10, to 0.1 % (9e-5 in the third cycle
+ * with MUMPS's QAMD ordering, below 1e-6 with AMF before the unloading
+ * legs ended within 1 % of the unloading stress: chance of the last
+ * digits).
+ * The extrapolated predictor starts each step
  * nearer the solution, so it needs fewer Newton iterations, and with the
  * reuse fewer factorisations than linear solves are done.
  *
@@ -159,9 +164,12 @@ main(int argc, char **argv)
   check(peak_difference(a, b, peak, n, a.size()) < 1e-2,
         "extrapolated predictor: the cycle peaks after the collapse within "
         "1 % of the peak");
-  check(peak_difference(b, c, peak, 0, b.size()) < 1e-6,
+  check(peak_difference(b, c, peak, 0, n) < 1e-6,
         "factorisation reuse: the same cycle peaks as the direct solves "
-        "(1e-6 of the peak) in every cycle");
+        "(1e-6 of the peak) up to the peak");
+  check(peak_difference(b, c, peak, n, b.size()) < 1e-3,
+        "factorisation reuse: the cycle peaks after the collapse within "
+        "0.1 % of the peak");
   check(predictor.at("newton_iterations").as_number() <
           0.9 * before.at("newton_iterations").as_number() *
             predictor.at("steps").as_number() / before.at("steps").as_number(),
