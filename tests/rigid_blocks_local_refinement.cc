@@ -18,44 +18,15 @@
 #include <masonry/rigid_blocks/block_model.h>
 
 #include "geometry_common.h"
+#include "local_refinement_common.h"
 
 using namespace masonry;
-
-namespace
-{
-  /** Whether every contact point of @p a is one of @p b's (position,
-   * normal up to the sign, area) and both have as many. */
-  bool
-  same_points(const rigid_blocks::Interface &a,
-              const rigid_blocks::Interface &b)
-  {
-    if (a.points.size() != b.points.size())
-      return false;
-    for (const auto &p : a.points)
-      {
-        bool found = false;
-        for (const auto &q : b.points)
-          found =
-            found || (p.position.distance(q.position) < 1e-10 &&
-                      std::abs(std::abs(p.normal * q.normal) - 1) < 1e-12 &&
-                      std::abs(p.area - q.area) < 1e-12 * q.area);
-        if (!found)
-          return false;
-      }
-    return true;
-  }
-} // namespace
 
 int
 main()
 {
-  const auto                   vault = test::create("barrel vault", "");
-  rigid_blocks::Discretisation coarse;
-  coarse.n_u                        = 2;
-  coarse.n_v                        = 2;
-  coarse.supported_edges            = {"springing left", "springing right"};
-  rigid_blocks::Discretisation fine = coarse;
-  fine.n_u = fine.n_v = 4;
+  const auto vault    = test::create("barrel vault", "");
+  auto [coarse, fine] = test::coarse_and_fine();
   coarse.splits       = {
           {{dealii::Point<2>(0.25, 0.25), dealii::Point<2>(0.75, 0.75)}}, {}};
   const rigid_blocks::BlockModel local(*vault, coarse), uniform(*vault, fine);
@@ -81,7 +52,7 @@ main()
       across += t && blocks[i.first].patch != blocks[i.second].patch;
       support += i.second == rigid_blocks::Interface::support;
       for (const auto &j : uniform.interfaces())
-        if (same_points(i, j))
+        if (test::same_points(i, j))
           {
             ++matched;
             break;

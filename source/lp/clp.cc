@@ -389,7 +389,8 @@ namespace masonry
         "static problem in the contact forces) without presolve, by the "
         "barrier when the LP has at least as many columns as rows "
         "(Mohr-Coulomb joints: the plastic multipliers), else (no tension "
-        "no sliding) by the primal simplex, maps the vertex back and "
+        "no sliding) by the primal simplex without scaling, maps the "
+        "vertex back and "
         "confirms it with the dual simplex (the primal simplex if the "
         "mapped basis is not dual feasible; both without scaling, after a "
         "pass of the primal simplex on the unscaled dual LP, when the "
@@ -508,6 +509,14 @@ namespace masonry
           if (method == "barrier")
             reduced = without_singleton_rows(*dual);
           ClpSimplex &solved = reduced.model ? *reduced.model : *dual;
+          // the primal simplex on the dual (no tension no sliding) without
+          // Clp's scaling: Bothwell settlement 6 x 8 blocks per half 0.023
+          // CPU s against 0.055, 12 x 16 0.47 against 0.72, 24 x 32 11.1
+          // against 15.0 (the same optima and about as many iterations,
+          // each cheaper: contrib/benchmarks/lp_solvers/
+          // results-2026-11-25c.md)
+          if (method == "primal simplex")
+            solved.scaling(0);
           run(solved, method, false);
           iterations += solved.numberIterations();
           if (method == "barrier" && solved.isProvenPrimalInfeasible())

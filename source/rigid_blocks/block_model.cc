@@ -378,7 +378,7 @@ namespace masonry
             dealii::Point<2> outward;
             outward[f / 2]                           = (f % 2 == 0) ? -1. : 1.;
             const std::array<dealii::Point<2>, 2> uv = {
-              cell->face(f)->vertex(0), cell->face(f)->vertex(1)};
+              {cell->face(f)->vertex(0), cell->face(f)->vertex(1)}};
             const unsigned int b = offset + cell->active_cell_index();
             if (cell->at_boundary(f))
               {
@@ -586,57 +586,79 @@ namespace masonry
         }
       // locally refined meshes: a face of a split block glued to part of a
       // coarser block's face of the other patch, along one of the halves
-      // (quarters, ...) of that face in its parameters
-      unsigned int depth = 0;
+      // (quarters, ...) of that face in its parameters. The pieces are
+      // searched level by level, in order along the face, and a piece is
+      // halved only while an unmatched face lies near it (within twice the
+      // length of its chords; a face inside the piece is within half its
+      // arc), so the cost follows the faces present, not the number of
+      // refinement rounds (those were once the depth: 2^Stages pieces).
+      bool refined = false;
       for (const auto &rounds : options.splits)
-        depth = std::max<unsigned int>(depth, rounds.size());
-      for (unsigned int a = 0; a < boundary_faces.size() && depth > 0; ++a)
+        refined = refined || !rounds.empty();
+      for (unsigned int a = 0; a < boundary_faces.size() && refined; ++a)
         {
           const auto &fa = boundary_faces[a];
           if (used[a] || (fa.x[0].distance(fa.x[1]) < tolerance &&
                           fa.x[0].distance(fa.x[2]) < tolerance))
             continue;
-          for (unsigned int d = 1; d <= depth; ++d)
+          // is an unmatched face of another block (than a's) near x?
+          const auto near = [&](const dealii::Point<3> &x, const double r) {
+            for (unsigned int b = 0; b < boundary_faces.size(); ++b)
+              if (!used[b] && b != a && boundary_faces[b].block != fa.block &&
+                  boundary_faces[b].x[2].distance(x) < r)
+                return true;
+            return false;
+          };
+          // the pieces of the current level, their ends in parameters
+          std::vector<std::array<dealii::Point<2>, 2>> pieces = {fa.uv};
+          while (!pieces.empty())
             {
-              // the ends and midpoints of the 2^d pieces of face a
-              const unsigned int            n = 1u << d;
-              std::vector<dealii::Point<2>> uv(2 * n + 1);
-              std::vector<dealii::Point<3>> x(2 * n + 1);
-              for (unsigned int k = 0; k <= 2 * n; ++k)
-                {
-                  uv[k] =
-                    fa.uv[0] + (double(k) / (2 * n)) * (fa.uv[1] - fa.uv[0]);
-                  x[k] = patches[fa.patch].point(uv[k]);
-                }
-              for (unsigned int k = 0; k < n; ++k)
-                for (unsigned int b = 0; b < boundary_faces.size(); ++b)
+              std::vector<std::array<dealii::Point<2>, 2>> next;
+              for (const auto &piece : pieces)
+                for (unsigned int h = 0; h < 2; ++h)
                   {
-                    const auto &fb = boundary_faces[b];
-                    if (used[b] || b == a || fa.block == fb.block)
+                    const dealii::Point<2> mid = 0.5 * (piece[0] + piece[1]);
+                    const std::array<dealii::Point<2>, 2> uv = {
+                      {h == 0 ? piece[0] : mid, h == 0 ? mid : piece[1]}};
+                    const dealii::Point<3> x0 = patches[fa.patch].point(uv[0]),
+                                           x1 = patches[fa.patch].point(uv[1]),
+                                           xm = patches[fa.patch].point(
+                                             0.5 * (uv[0] + uv[1]));
+                    const double r = 2 * (x0.distance(xm) + xm.distance(x1));
+                    if (r < tolerance || !near(xm, r))
                       continue;
-                    const auto &x0 = x[2 * k], &x1 = x[2 * k + 2];
-                    if (fb.x[2].distance(x[2 * k + 1]) < tolerance &&
-                        ((fb.x[0].distance(x0) < tolerance &&
-                          fb.x[1].distance(x1) < tolerance) ||
-                         (fb.x[0].distance(x1) < tolerance &&
-                          fb.x[1].distance(x0) < tolerance)))
+                    bool matched = false;
+                    for (unsigned int b = 0; b < boundary_faces.size(); ++b)
                       {
-                        // the geometry of the face listed first, as for
-                        // conforming faces (where the patches meet at an
-                        // angle, the contact points depend on the side)
-                        used[a] = used[b] = true;
-                        if (b < a)
-                          add_interface(
-                            fb.patch, fb.uv, fb.outward, fb.block, fa.block);
-                        else
-                          add_interface(fa.patch,
-                                        {{uv[2 * k], uv[2 * k + 2]}},
-                                        fa.outward,
-                                        fa.block,
-                                        fb.block);
-                        break;
+                        const auto &fb = boundary_faces[b];
+                        if (used[b] || b == a || fa.block == fb.block)
+                          continue;
+                        if (fb.x[2].distance(xm) < tolerance &&
+                            ((fb.x[0].distance(x0) < tolerance &&
+                              fb.x[1].distance(x1) < tolerance) ||
+                             (fb.x[0].distance(x1) < tolerance &&
+                              fb.x[1].distance(x0) < tolerance)))
+                          {
+                            // the geometry of the face listed first, as for
+                            // conforming faces (where the patches meet at an
+                            // angle, the contact points depend on the side)
+                            used[a] = used[b] = matched = true;
+                            if (b < a)
+                              add_interface(fb.patch,
+                                            fb.uv,
+                                            fb.outward,
+                                            fb.block,
+                                            fa.block);
+                            else
+                              add_interface(
+                                fa.patch, uv, fa.outward, fa.block, fb.block);
+                            break;
+                          }
                       }
+                    if (!matched)
+                      next.push_back(uv);
                   }
+              pieces = std::move(next);
             }
         }
       std::set<std::string> labels_found;
