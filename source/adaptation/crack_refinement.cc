@@ -301,16 +301,23 @@ namespace masonry
             line << "  stage " << s << ": " << blocks.size() << " blocks ("
                  << options.n_u << " x " << options.n_v << " per patch"
                  << (refinement.split_blocks ? ", locally refined" : "")
-                 << "), best " << std::setprecision(8) << f << ", "
-                 << std::setprecision(3) << seconds << " s\n";
+                 << "), ";
+            if (std::isfinite(f))
+              line << "best " << std::setprecision(8) << f << ", ";
+            else
+              line << "no finite fitness, ";
+            line << std::setprecision(3) << seconds << " s\n";
             pcout << line.str();
           }
           Json stage              = Json::object();
           stage["blocks"]         = blocks.size();
           stage["blocks_along_u"] = options.n_u;
           stage["blocks_along_v"] = options.n_v;
-          stage["fitness"]        = f;
-          stage["seconds"]        = seconds;
+          // (none where the analysis is incompatible or failed: the run
+          // stops refining, and the result of the last mesh says why)
+          if (std::isfinite(f))
+            stage["fitness"] = f;
+          stage["seconds"] = seconds;
           stages.push_back(stage);
           ++n_stages;
           if (s == 0)
@@ -455,17 +462,22 @@ namespace masonry
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
           .count();
 
-      Json a               = Json::object();
-      a["optimiser"]       = optimiser_name;
-      a["fitness"]         = fitness_name();
-      a["stages"]          = stages;
-      a["evaluations"]     = n_stages;
-      a["seconds"]         = seconds;
-      a["uniform_fitness"] = first;
-      a["best_fitness"]    = last;
-      a["blocks_along_u"]  = options.n_u;
-      a["blocks_along_v"]  = options.n_v;
-      Json lines_u         = Json::array();
+      Json a           = Json::object();
+      a["optimiser"]   = optimiser_name;
+      a["fitness"]     = fitness_name();
+      a["stages"]      = stages;
+      a["evaluations"] = n_stages;
+      a["seconds"]     = seconds;
+      if (std::isfinite(first))
+        a["uniform_fitness"] = first;
+      if (std::isfinite(last))
+        a["best_fitness"] = last;
+      else
+        a["stopped"] =
+          "the mesh of the last stage gives no finite " + fitness_name();
+      a["blocks_along_u"] = options.n_u;
+      a["blocks_along_v"] = options.n_v;
+      Json lines_u        = Json::array();
       for (const auto &x : u)
         lines_u.push_back(numbers(x));
       a["lines_u"]                  = lines_u;
@@ -480,6 +492,10 @@ namespace masonry
              << options.n_v << " per patch)\n";
       else
         line << options.n_u << " x " << options.n_v << " blocks per patch\n";
+      if (!std::isfinite(last))
+        line << "Adaptation: stopped: the mesh of the last stage gives no "
+                "finite "
+             << fitness_name() << " (the result below says why)\n";
       pcout << line.str();
     }
   } // namespace analysis

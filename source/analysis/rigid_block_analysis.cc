@@ -461,6 +461,33 @@ namespace masonry
         }
       const auto   first   = std::chrono::steady_clock::now();
       const double uniform = fitness[0](x0);
+      // the state of the final analysis, after the evaluations
+      const auto finish = [&](const std::vector<double> &genes) {
+        quiet            = false;
+        mesh_vertices    = vertices_from_genes(genes);
+        seconds_geometry = seconds_assembly = seconds_solve = 0;
+        cpu_seconds_solve                                   = 0;
+        // the other threads' copies are not needed for the final analysis
+        workers.clear();
+        n_solves = n_iterations = 0;
+      };
+      if (!std::isfinite(uniform))
+        {
+          // an incompatible (or failed) uniform mesh: every optimiser
+          // compares finite fitnesses, so nothing would steer it; the
+          // uniform mesh is analysed and its result says why
+          finish(x0);
+          Json a           = Json::object();
+          a["optimiser"]   = optimiser_name;
+          a["fitness"]     = fitness_name();
+          a["genes"]       = x0.size();
+          a["evaluations"] = 1;
+          a["stopped"] = "the uniform mesh gives no finite " + fitness_name();
+          context.summary["adaptation"] = a;
+          pcout << "Adaptation: stopped: the uniform mesh gives no finite "
+                << fitness_name() << " (the result below says why)\n";
+          return;
+        }
       {
         // what a generation will cost, before the first one (silent)
         // starts: every thread evolves an island of the whole population
@@ -501,17 +528,11 @@ namespace masonry
       const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
           .count();
-      quiet                  = false;
       unsigned long n_failed = 0;
       for (const auto f : failed)
         n_failed += f;
-      mesh_vertices    = vertices_from_genes(result.best_genes);
-      seconds_geometry = seconds_assembly = seconds_solve = 0;
-      cpu_seconds_solve                                   = 0;
-      // the other threads' copies are not needed for the final analysis
       const unsigned int n_threads = analyses.size();
-      workers.clear();
-      n_solves = n_iterations = 0;
+      finish(result.best_fitness < uniform ? x0 : result.best_genes);
 
       Json a               = Json::object();
       a["optimiser"]       = optimiser_name;
