@@ -287,6 +287,15 @@ namespace masonry
       quiet             = true;
       double first = -std::numeric_limits<double>::infinity(), last = first;
       unsigned int n_stages = 0, n_split = 0;
+      // the mesh of the last stage with a finite fitness
+      struct Kept
+      {
+        std::vector<std::vector<double>>                        u;
+        std::vector<double>                                     v;
+        std::vector<std::vector<std::vector<dealii::Point<2>>>> splits;
+        unsigned int                                            n_split = 0;
+      } kept;
+      unsigned int failed_stage = 0;
       for (unsigned int s = 0; s < refinement.stages; ++s)
         {
           set_mesh();
@@ -322,9 +331,21 @@ namespace masonry
           ++n_stages;
           if (s == 0)
             first = f;
-          last = f;
           if (!std::isfinite(f))
-            break;
+            {
+              // a later stage that fails: its parent mesh is analysed
+              if (s > 0)
+                {
+                  u              = kept.u;
+                  v              = kept.v;
+                  options.splits = kept.splits;
+                  n_split        = kept.n_split;
+                  failed_stage   = s;
+                }
+              break;
+            }
+          last = f;
+          kept = {u, v, options.splits, n_split};
           if (refinement.split_blocks)
             {
               // the centres of the blocks to split, by patch
@@ -473,8 +494,11 @@ namespace masonry
       if (std::isfinite(last))
         a["best_fitness"] = last;
       else
-        a["stopped"] =
-          "the mesh of the last stage gives no finite " + fitness_name();
+        a["stopped"] = "the uniform mesh gives no finite " + fitness_name();
+      if (failed_stage > 0)
+        a["stopped"] = "stage " + std::to_string(failed_stage) +
+                       " gives no finite " + fitness_name() +
+                       "; the mesh of the stage before is analysed";
       a["blocks_along_u"] = options.n_u;
       a["blocks_along_v"] = options.n_v;
       Json lines_u        = Json::array();
@@ -492,10 +516,9 @@ namespace masonry
              << options.n_v << " per patch)\n";
       else
         line << options.n_u << " x " << options.n_v << " blocks per patch\n";
-      if (!std::isfinite(last))
-        line << "Adaptation: stopped: the mesh of the last stage gives no "
-                "finite "
-             << fitness_name() << " (the result below says why)\n";
+      if (a.contains("stopped"))
+        line << "Adaptation: stopped: " << a.at("stopped").as_string()
+             << (failed_stage > 0 ? "\n" : " (the result below says why)\n");
       pcout << line.str();
     }
   } // namespace analysis

@@ -9,6 +9,7 @@
 #include <masonry/rigid_blocks/interface_model.h>
 #include <masonry/rigid_blocks/postprocess/interface.h>
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
 #include <algorithm>
@@ -471,7 +472,9 @@ namespace masonry
         workers.clear();
         n_solves = n_iterations = 0;
       };
-      if (!std::isfinite(uniform))
+      // (decided on all ranks alike: the island optimiser communicates)
+      if (dealii::Utilities::MPI::min(std::isfinite(uniform) ? 1u : 0u,
+                                      context.mpi_communicator) == 0)
         {
           // an incompatible (or failed) uniform mesh: every optimiser
           // compares finite fitnesses, so nothing would steer it; the
@@ -532,7 +535,11 @@ namespace masonry
       for (const auto f : failed)
         n_failed += f;
       const unsigned int n_threads = analyses.size();
-      finish(result.best_fitness < uniform ? x0 : result.best_genes);
+      // the uniform mesh unless the optimiser found a mesh at least as good
+      const bool   improved     = result.best_fitness >= uniform;
+      const auto  &best         = improved ? result.best_genes : x0;
+      const double best_fitness = improved ? result.best_fitness : uniform;
+      finish(best);
 
       Json a               = Json::object();
       a["optimiser"]       = optimiser_name;
@@ -551,14 +558,14 @@ namespace masonry
       a["evaluations_per_second"] = (result.evaluations + 1) / seconds;
       a["repeated_evaluations"]   = n_repeated;
       a["uniform_fitness"]        = uniform;
-      a["best_fitness"]           = std::max(result.best_fitness, uniform);
+      a["best_fitness"]           = best_fitness;
       Json genes                  = Json::array();
-      for (const double g : result.best_genes)
+      for (const double g : best)
         genes.push_back(g);
       a["best_genes"]               = genes;
       context.summary["adaptation"] = a;
       pcout << "Adaptation: best " << fitness_name() << " "
-            << std::setprecision(8) << result.best_fitness << " (uniform mesh "
+            << std::setprecision(8) << best_fitness << " (uniform mesh "
             << uniform << "), " << result.evaluations + 1 << " evaluations in "
             << std::setprecision(3) << seconds << " s\n";
 
