@@ -55,8 +55,9 @@ namespace masonry
          * last IMPL-EX update (BrickPoint::tensile_factor, then
          * compressive_factor; `Nonlocal length'), so that the deletion
          * and the output evaluate the law at the converged state as the
-         * step did; empty: local. Not checkpointed: the update of the
-         * next step recomputes them before they are read. */
+         * step did; empty: local. Checkpointed: a resumed run that stops
+         * before its first accepted step writes its output with them
+         * (they cannot be recomputed from the accepted states). */
         std::array<std::vector<double>, 2> nonlocal_factors;
 
         /** The factors of brick point @p p into @p point (nothing if
@@ -70,14 +71,15 @@ namespace masonry
           point.compressive_factor = nonlocal_factors[1][p];
         }
 
-        /** Write or read the deletions (the factors follow from the
-         * settings). */
+        /** Write or read the deletions and the nonlocal factors (the
+         * strength factors follow from the settings). */
         template <class Archive>
         void
         serialize(Archive &ar, const unsigned int)
         {
           ar &n_deleted &deleted &face_deleted &fade &split_shortening
-            &max_shortening;
+              &max_shortening &nonlocal_factors[0] &
+            nonlocal_factors[1];
         }
       };
 
