@@ -44,22 +44,15 @@ namespace
     return s.str();
   }
 
+  /** The barrel vault of the Mohr–Coulomb cases. */
   std::string
   barrel(const unsigned int n)
   {
-    return "set Analysis = settlement\n"
-           "subsection Geometry model\n  set Model name = barrel vault\n"
-           "  set Thickness = 0.3\n  set Density = 2000\n"
-           "  subsection Barrel vault\n    set Shape = circular\n"
-           "    set Span = 6\n    set Rise = 3\n    set Length = 6\n"
-           "  end\nend\n"
-           "subsection Settlement\n  set Blocks along u = " +
-           std::to_string(n) + "\n  set Blocks along v = " + std::to_string(n) +
-           "\n  set Settlement = 0; 0; -0.01*y/6\n"
-           "  set Write picture = false\nend\n"
-           "subsection Interface model\n  set Model = mohr coulomb\n"
-           "  subsection Mohr coulomb\n    set Cohesion = 2e4\n"
-           "    set Tensile strength = 3e4\n  end\nend\n";
+    return barrel_prm(n,
+                      "0; 0; -0.01*y/6",
+                      "  set Model = mohr coulomb\n"
+                      "  subsection Mohr coulomb\n    set Cohesion = 2e4\n"
+                      "    set Tensile strength = 3e4\n  end\n");
   }
 
   /** Whether the stage objectives never decrease (1e-9 relative). */

@@ -16,16 +16,7 @@ using namespace vault_tests;
 namespace
 {
   const std::string barrel =
-    "set Analysis = settlement\n"
-    "subsection Geometry model\n  set Model name = barrel vault\n"
-    "  set Thickness = 0.3\n  set Density = 2000\n"
-    "  subsection Barrel vault\n    set Shape = circular\n"
-    "    set Span = 6\n    set Rise = 3\n    set Length = 6\n"
-    "  end\nend\n"
-    "subsection Settlement\n  set Blocks along u = 2\n"
-    "  set Blocks along v = 2\n  set Settlement = 0.01*y/6; 0; 0\n"
-    "  set Write picture = false\nend\n"
-    "subsection Interface model\n  set Model = no tension no sliding\nend\n";
+    barrel_prm(2, "0.01*y/6; 0; 0", "  set Model = no tension no sliding\n");
 
   /** Whether run @p s ended incompatible after one evaluation, with no
    * fitness in its summary. */

@@ -74,6 +74,29 @@ namespace vault_tests
     return std::abs(a - b) / std::max(std::abs(b), 1e-300);
   }
 
+  /** A prm text for a settlement of a circular barrel vault (span 6 m,
+   * rise 3 m, length 6 m, thickness 0.3 m, density 2000 kg/m³) with @p n x
+   * @p n blocks per half, support motion @p settlement (m, in x; y; z) and
+   * the joints of the Interface model text @p joints. */
+  inline std::string
+  barrel_prm(const unsigned int n,
+             const std::string &settlement,
+             const std::string &joints)
+  {
+    return "set Analysis = settlement\n"
+           "subsection Geometry model\n  set Model name = barrel vault\n"
+           "  set Thickness = 0.3\n  set Density = 2000\n"
+           "  subsection Barrel vault\n    set Shape = circular\n"
+           "    set Span = 6\n    set Rise = 3\n    set Length = 6\n"
+           "  end\nend\n"
+           "subsection Settlement\n  set Blocks along u = " +
+           std::to_string(n) + "\n  set Blocks along v = " + std::to_string(n) +
+           "\n  set Settlement = " + settlement +
+           "\n  set Write picture = false\nend\n"
+           "subsection Interface model\n" +
+           joints + "end\n";
+  }
+
   /** A prm text for a semicircular arch of radius R (thickness t, depth 1 m,
    * density 2000 kg/m³) with @p n blocks per half under @p settlement of the
    * right springing. */
