@@ -444,17 +444,8 @@ namespace masonry
         // the state of the last converged step is bad: not written
         bool bad_state = false;
         // the physical bound on the platen stress (model/bounds.h)
-        double bound_strength = 0, bound_modulus = 0;
-        for (const BrickMaterial *m : {&material, mortar})
-          if (m != nullptr)
-            {
-              bound_strength =
-                std::max(bound_strength, m->compressive_strength());
-              const auto C = m->elastic_stiffness();
-              for (unsigned int i = 0; i < 3; ++i)
-                bound_modulus = std::max(bound_modulus, C[i][i][i][i]);
-            }
-        System::Vector u_converged(system.u);
+        const std::array<double, 2> bound = bound_materials(material, mortar);
+        System::Vector              u_converged(system.u);
         // along the direction: positive displacement is the loading sense
         while (progress.segment < legs.size())
           {
@@ -467,16 +458,9 @@ namespace masonry
             const double taken     = std::abs(next - applied);
             const double time_step = taken / settings.protocol.platen_speed;
             // IMPL-EX: no extrapolation across a reversal of the platen,
-            // and never more than the step control's growth: after a tiny
-            // step aimed at the unloading stress (2e-9 m, then 5e-6 m) the
-            // ratio was in the thousands and multiplied that step's
-            // changes of the internal variables, which are not
-            // proportional to its length (the update after a step also
-            // carries the redistribution that follows the update of the
-            // step before, at any platen increment): damages jumped to
-            // their cap in one step at zero force and the wall ran away
-            // (the single cyclic example with the mortar's elastic crack
-            // flow; tests/brickwork_implex_ratio)
+            // and at most the step control's growth (an unbounded ratio
+            // after a tiny step made the cyclic examples run away:
+            // doc/brickwork.md, IMPL-EX; tests/brickwork_implex_ratio)
             const double ratio = progress.last_increment > 0 &&
                                      curve.size() > 1 &&
                                      curve.back().unloading == leg.unloading &&
@@ -633,8 +617,8 @@ namespace masonry
               }
             const std::string runaway = runaway_problem(curve.back().stress,
                                                         curve.back().strain,
-                                                        bound_strength,
-                                                        bound_modulus);
+                                                        bound[0],
+                                                        bound[1]);
             if (!runaway.empty())
               {
                 status  = "failed";

@@ -510,11 +510,8 @@ namespace masonry
             reduced = without_singleton_rows(*dual);
           ClpSimplex &solved = reduced.model ? *reduced.model : *dual;
           // the primal simplex on the dual (no tension no sliding) without
-          // Clp's scaling: Bothwell settlement 6 x 8 blocks per half 0.023
-          // CPU s against 0.055, 12 x 16 0.47 against 0.72, 24 x 32 11.1
-          // against 15.0 (the same optima and about as many iterations,
-          // each cheaper: contrib/benchmarks/lp_solvers/
-          // results-2026-11-25c.md)
+          // Clp's scaling: the same optima, cheaper iterations
+          // (contrib/benchmarks/lp_solvers/results-2026-11-25c.md)
           if (method == "primal simplex")
             solved.scaling(0);
           run(solved, method, false);
@@ -563,17 +560,12 @@ namespace masonry
           // past the cap the LP is solved directly
           model.setMaximumIterations(1000 + model.numberRows() / 20);
           // clean up from the restored basis: a vertex of the original
-          // problem. The basis is the dual LP's optimal one, so it is dual
-          // feasible; its primal values may miss a bound by the dual LP's
-          // tolerances (1e-8..1e-7). The dual simplex repairs that in a few
-          // pivots; the primal simplex, from such a point, wandered through
-          // thousands of degenerate pivots to a vertex up to 2e-5 too high
-          // (the barrel corner settlement at 12 x 16 blocks per half: 7329
-          // + 3875 iterations, 10.5 CPU s, against 3 iterations and 0.04 s;
-          // SciPy's HiGHS agrees with the dual simplex's optimum to 1e-12,
-          // contrib/benchmarks/lp_solvers/results-2026-11-24g.md). With
-          // dual infeasibilities (Clp's checks after the restore) the primal
-          // simplex is the one that starts feasible.
+          // problem. The basis is the dual LP's optimal one, so dual
+          // feasible; the dual simplex repairs its primal values (off by
+          // the dual LP's tolerances) in a few pivots, where the primal
+          // simplex wandered to a vertex up to 2e-5 too high
+          // (contrib/benchmarks/lp_solvers/results-2026-11-24g.md). With
+          // dual infeasibilities the primal simplex starts feasible.
           const bool dual_feasible = model.numberDualInfeasibilities() == 0;
           if (dual_feasible)
             model.dual(0);

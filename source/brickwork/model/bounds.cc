@@ -1,5 +1,8 @@
+#include <masonry/brickwork/brick_material.h>
+
 #include "bounds.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -17,6 +20,22 @@ namespace masonry
         return stress_bound_factor *
                (std::abs(strength) +
                 std::abs(modulus) * (std::abs(strain) + 1e-4));
+      }
+
+      std::array<double, 2>
+      bound_materials(const BrickMaterial &material,
+                      const BrickMaterial *mortar)
+      {
+        std::array<double, 2> bound = {{0., 0.}};
+        for (const BrickMaterial *m : {&material, mortar})
+          if (m != nullptr)
+            {
+              bound[0]     = std::max(bound[0], m->compressive_strength());
+              const auto C = m->elastic_stiffness();
+              for (unsigned int i = 0; i < 3; ++i)
+                bound[1] = std::max(bound[1], C[i][i][i][i]);
+            }
+        return bound;
       }
 
       std::string

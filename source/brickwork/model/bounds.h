@@ -6,12 +6,15 @@
 #ifndef masonry_brickwork_model_bounds_h
 #define masonry_brickwork_model_bounds_h
 
+#include <array>
 #include <string>
 
 namespace masonry
 {
   namespace brickwork
   {
+    class BrickMaterial;
+
     namespace model
     {
       /**
@@ -34,6 +37,15 @@ namespace masonry
       stress_bound(const double strength,
                    const double modulus,
                    const double strain);
+
+      /**
+       * The largest compressive strength and the largest constrained
+       * modulus C_iiii (Pa) of @p material and @p mortar (may be null): the
+       * strength and modulus of stress_bound().
+       */
+      std::array<double, 2>
+      bound_materials(const BrickMaterial &material,
+                      const BrickMaterial *mortar);
 
       /**
        * Empty if |stress| <= stress_bound(strength, modulus, strain), else
