@@ -24,7 +24,8 @@ echo "installed: bin/masonry, share/masonry/scripts/vault_picture.py"
 run() { # name
   cp "$example" "$1.prm"
   echo "set Output directory = $work/results-$1" >>"$1.prm"
-  (cd moved/bin && ./masonry "$work/$1.prm" >"$work/$1.log" 2>&1)
+  (cd moved/bin && env -u MASONRY_SCRIPT_DIR ./masonry "$work/$1.prm" \
+    >"$work/$1.log" 2>&1)
 }
 
 run installed
@@ -70,10 +71,17 @@ end
 PRM
 mkdir -p elsewhere
 mv moved/share/masonry/scripts/wallette_curve.py elsewhere/
-(cd moved/bin && ./masonry "$work/wallette.prm" >"$work/wallette.log" 2>&1)
+(cd moved/bin && env -u MASONRY_SCRIPT_DIR ./masonry "$work/wallette.prm" \
+  >"$work/wallette.log" 2>&1) || {
+  cat wallette.log
+  exit 1
+}
 sed "s|results-wallette|results-wallette-env|" wallette.prm >wallette-env.prm
 (cd moved/bin && MASONRY_SCRIPT_DIR="$work/elsewhere" \
-  ./masonry "$work/wallette-env.prm" >"$work/wallette-env.log" 2>&1)
+  ./masonry "$work/wallette-env.prm" >"$work/wallette-env.log" 2>&1) || {
+  cat wallette-env.log
+  exit 1
+}
 /usr/bin/python3 - "$work" <<'PY'
 import json, os, sys
 w = sys.argv[1]

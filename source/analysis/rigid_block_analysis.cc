@@ -380,17 +380,15 @@ namespace masonry
         }
         if (picture)
           {
-            const std::string script  = find_script("adaptation_plot.py");
-            const std::string dir     = context.output.path();
-            const std::string command = "/usr/bin/python3 '" + script + "' '" +
-                                        dir + "adaptation.csv' '" + dir +
-                                        "adaptation.png' >/dev/null 2>&1";
-            if (!script.empty() && std::system(command.c_str()) == 0)
+            const std::string dir = context.output.path();
+            const std::string why =
+              run_script("adaptation_plot.py",
+                         {dir + "adaptation.csv", dir + "adaptation.png"});
+            if (why.empty())
               context.output.file("adaptation.png");
             else
-              context.pcout
-                << "Note: adaptation.png not written (adaptation_plot.py "
-                   "with /usr/bin/python3 and matplotlib)\n";
+              context.pcout << "Note: adaptation.png not written (" << why
+                            << ")\n";
           }
       }
     } // namespace

@@ -61,4 +61,30 @@ namespace masonry
       }
     return "";
   }
+
+  std::string
+  run_script(const std::string &name, const std::vector<std::string> &arguments)
+  {
+    const std::string script = find_script(name);
+    const std::string python = "/usr/bin/python3";
+    if (script.empty())
+      return name + " not found";
+    std::error_code error;
+    if (!std::filesystem::exists(python, error))
+      return python + " not found";
+    // each argument in single quotes, a quote inside as '\''
+    auto quoted = [](const std::string &text) {
+      std::string q = "'";
+      for (const char c : text)
+        q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+      return q + "'";
+    };
+    std::string command = python + " " + quoted(script);
+    for (const auto &argument : arguments)
+      command += " " + quoted(argument);
+    command += " >/dev/null 2>&1";
+    if (std::system(command.c_str()) != 0)
+      return name + " failed (needs python3-matplotlib)";
+    return "";
+  }
 } // namespace masonry

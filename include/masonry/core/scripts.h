@@ -15,7 +15,8 @@
  * if (script.empty()) ... // say that the picture is not written, and why
  * @endcode
  *
- * and runs it with `/usr/bin/python3`. A new script is a new file in
+ * and runs it with `/usr/bin/python3`, or calls run_script(), which does
+ * both. A new script is a new file in
  * contrib/plot/; the build copies and installs it.
  */
 #ifndef masonry_core_scripts_h
@@ -46,6 +47,19 @@ namespace masonry
    */
   std::string
   find_script(const std::string &name);
+
+  /**
+   * Run the installed script @p name (find_script()) with `/usr/bin/python3`
+   * and @p arguments (each passed as one argument), its output discarded.
+   * Returns "" if it ran and exited with 0, otherwise why not: "NAME not
+   * found", "/usr/bin/python3 not found" or "NAME failed (needs
+   * python3-matplotlib)". The caller names the files the script wrote
+   * (OutputDirectory::file()) only on success: a file named but not written
+   * makes the run `failed'.
+   */
+  std::string
+  run_script(const std::string              &name,
+             const std::vector<std::string> &arguments);
 } // namespace masonry
 
 #endif

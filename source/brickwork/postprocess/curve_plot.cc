@@ -37,25 +37,17 @@ namespace masonry
               !view.settings.protocol.cycle_amplitudes.empty();
             if (dealii::Utilities::MPI::this_mpi_process(view.system.comm) != 0)
               return;
-            const std::string script = find_script("wallette_curve.py");
-            const std::string python = "/usr/bin/python3";
-            int               rc     = 1;
-            if (!script.empty() && std::filesystem::exists(python))
-              rc =
-                std::system((python + " '" + script + "' '" +
-                             view.context.output.path() + "' >/dev/null 2>&1")
-                              .c_str());
-            if (rc == 0)
+            const std::string why =
+              run_script("wallette_curve.py", {view.context.output.path()});
+            if (why.empty())
               {
                 view.context.output.file("curve.png");
                 if (cyclic)
                   view.context.output.file("degradation.png");
               }
             else
-              view.context.pcout
-                << "Warning: the plots could not be drawn (needs the "
-                   "installed script wallette_curve.py and /usr/bin/python3 "
-                   "with matplotlib)\n";
+              view.context.pcout << "Warning: the plots could not be drawn ("
+                                 << why << ")\n";
           }
         };
       } // namespace

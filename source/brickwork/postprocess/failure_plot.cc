@@ -231,23 +231,16 @@ namespace masonry
           s["deleted_cells"]          = double(n_deleted);
           s["cells_damage_over_half"] = double(n_damaged);
 
-          const std::string png    = view.context.output.path() + "failure.png";
-          const std::string script = find_script("wallette_failure.py");
-          const std::string python = "/usr/bin/python3";
-          int               rc     = 1;
-          if (!script.empty() && std::filesystem::exists(python))
-            rc = std::system((python + " '" + script + "' '" +
-                              view.context.output.path() + "' >/dev/null 2>&1")
-                               .c_str());
-          if (rc == 0) // named as a file of the run only once drawn
+          const std::string why =
+            run_script("wallette_failure.py", {view.context.output.path()});
+          if (why.empty()) // named as a file of the run only once drawn
             view.context.output.file("failure.png");
           else
             {
-              std::filesystem::remove(png);
-              view.context.pcout
-                << "Warning: failure.png could not be drawn (needs the "
-                   "installed script wallette_failure.py and /usr/bin/python3 "
-                   "with matplotlib); its data are in failure.json\n";
+              std::filesystem::remove(view.context.output.path() +
+                                      "failure.png");
+              view.context.pcout << "Warning: failure.png could not be drawn ("
+                                 << why << "); its data are in failure.json\n";
             }
         }
       } // namespace

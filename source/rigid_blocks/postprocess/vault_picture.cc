@@ -69,28 +69,20 @@ namespace masonry
         static void
         render(const Result &result, RunContext &context)
         {
-          OutputDirectory  &dir    = context.output;
-          const std::string script = find_script("vault_picture.py");
-          const std::string python = "/usr/bin/python3";
-          if (script.empty() || !std::filesystem::exists(python))
-            {
-              context.pcout << "Note: vault.png not written ("
-                            << (script.empty() ? "vault_picture.py" : python)
-                            << " not found)\n";
-              return;
-            }
+          OutputDirectory   &dir = context.output;
           std::ostringstream amplification;
           amplification << std::setprecision(17) << result.amplification();
-          const std::string command =
-            python + " '" + script + "' '" + dir.path() + "blocks.vtu' '" +
-            dir.path() + "vault.png' '" +
-            xml_escape(context.summary.at("analysis").as_string()) +
-            "' --amplification " + amplification.str() + " > /dev/null 2>&1";
-          if (std::system(command.c_str()) == 0)
+          const std::string why =
+            run_script("vault_picture.py",
+                       {dir.path() + "blocks.vtu",
+                        dir.path() + "vault.png",
+                        xml_escape(context.summary.at("analysis").as_string()),
+                        "--amplification",
+                        amplification.str()});
+          if (why.empty())
             dir.file("vault.png");
           else
-            context.pcout << "Note: vault.png not written (matplotlib "
-                             "failed; install python3-matplotlib)\n";
+            context.pcout << "Note: vault.png not written (" << why << ")\n";
         }
       };
     } // namespace postprocess
