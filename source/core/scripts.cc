@@ -1,5 +1,6 @@
 #include <masonry/core/scripts.h>
 
+#include <cstdlib>
 #include <dlfcn.h>
 #include <filesystem>
 #include <system_error>
@@ -26,19 +27,24 @@ namespace masonry
         if (!error)
           bases.push_back(library.parent_path());
       }
-    std::vector<std::string> directories;
+    std::vector<fs::path> candidates;
+    if (const char *own = std::getenv("MASONRY_SCRIPT_DIR"); own && *own)
+      candidates.emplace_back(own);
     for (const auto &base : bases)
-      for (const fs::path &candidate :
-           {base.parent_path() / "share/masonry/scripts",
-            base / "share/masonry/scripts"})
-        {
-          const std::string d     = candidate.lexically_normal().string();
-          bool              known = false;
-          for (const auto &k : directories)
-            known = known || k == d;
-          if (!known)
-            directories.push_back(d);
-        }
+      {
+        candidates.push_back(base.parent_path() / "share/masonry/scripts");
+        candidates.push_back(base / "share/masonry/scripts");
+      }
+    std::vector<std::string> directories;
+    for (const fs::path &candidate : candidates)
+      {
+        const std::string d     = candidate.lexically_normal().string();
+        bool              known = false;
+        for (const auto &k : directories)
+          known = known || k == d;
+        if (!known)
+          directories.push_back(d);
+      }
     return directories;
   }
 

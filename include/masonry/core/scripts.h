@@ -27,12 +27,14 @@
 namespace masonry
 {
   /**
-   * The folders searched for scripts, in this order: for the folder of the
-   * running executable and then the folder of the masonry library (an
-   * out-of-tree program or a test linked against it), each `D`:
+   * The folders searched for scripts, in this order: the environment
+   * variable `MASONRY_SCRIPT_DIR` if set; for the folder of the running
+   * executable and then the folder of the masonry library (an out-of-tree
+   * program or a test linked against it), each `D`:
    * `D/../share/masonry/scripts` (installed: `<prefix>/bin`, `<prefix>/lib`)
    * and `D/share/masonry/scripts` (the build tree, where executable and
-   * library live in the build folder itself).
+   * library live in the build folder itself). An executable and library
+   * copied elsewhere find the scripts through `MASONRY_SCRIPT_DIR`.
    */
   std::vector<std::string>
   script_directories();

@@ -31,9 +31,10 @@ namespace masonry
           void
           finish(const ModelView &view, Json &) override
           {
-            view.context.output.file("curve.png");
-            if (!view.settings.protocol.cycle_amplitudes.empty())
-              view.context.output.file("degradation.png");
+            // the pictures are named as files of this run only once drawn:
+            // a file named but not written makes the run `failed'
+            const bool cyclic =
+              !view.settings.protocol.cycle_amplitudes.empty();
             if (dealii::Utilities::MPI::this_mpi_process(view.system.comm) != 0)
               return;
             const std::string script = find_script("wallette_curve.py");
@@ -44,7 +45,13 @@ namespace masonry
                 std::system((python + " '" + script + "' '" +
                              view.context.output.path() + "' >/dev/null 2>&1")
                               .c_str());
-            if (rc != 0)
+            if (rc == 0)
+              {
+                view.context.output.file("curve.png");
+                if (cyclic)
+                  view.context.output.file("degradation.png");
+              }
+            else
               view.context.pcout
                 << "Warning: the plots could not be drawn (needs the "
                    "installed script wallette_curve.py and /usr/bin/python3 "

@@ -231,7 +231,7 @@ namespace masonry
           s["deleted_cells"]          = double(n_deleted);
           s["cells_damage_over_half"] = double(n_damaged);
 
-          const std::string png    = view.context.output.file("failure.png");
+          const std::string png    = view.context.output.path() + "failure.png";
           const std::string script = find_script("wallette_failure.py");
           const std::string python = "/usr/bin/python3";
           int               rc     = 1;
@@ -239,7 +239,9 @@ namespace masonry
             rc = std::system((python + " '" + script + "' '" +
                               view.context.output.path() + "' >/dev/null 2>&1")
                                .c_str());
-          if (rc != 0)
+          if (rc == 0) // named as a file of the run only once drawn
+            view.context.output.file("failure.png");
+          else
             {
               std::filesystem::remove(png);
               view.context.pcout

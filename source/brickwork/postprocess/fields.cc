@@ -21,6 +21,7 @@
 #include <sstream>
 
 #include "../model/deletion.h"
+#include "../model/one_thread.h"
 #include "builtin.h"
 
 namespace masonry
@@ -128,7 +129,11 @@ namespace masonry
           if (regions)
             names.emplace_back("region");
           fields.assign(names.size(), Vector<float>(n_cells));
-          QGauss<3>   quadrature(2);
+          // the strains as the assembly and the deletion compute them
+          // (FEValues' reuse of translated cells' values): the fields do not
+          // change with `Assembly threads'
+          const model::OneThread one_thread;
+          QGauss<3>              quadrature(2);
           FEValues<3> fe_values(view.system.fe, quadrature, update_gradients);
           std::vector<SymmetricTensor<2, 3>> eps(8);
           const FEValuesExtractors::Vector   displacement(0);
