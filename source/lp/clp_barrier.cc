@@ -468,6 +468,7 @@ namespace masonry
                                              numberColumns);
       if (maxIts && barrierStatus < 4)
         {
+          bool optimal_values_pass = false;
           // crossover
           model.createStatus();
           model.setPerturbation(100);
@@ -526,6 +527,9 @@ namespace masonry
                 model.setObjectiveScale(1.0e-3);
                 model.primal(2);
                 model.setObjectiveScale(saveScale);
+                // (nothing below changes the basis or the primal values
+                // unless the dual pass runs)
+                optimal_values_pass = model.isProvenOptimal() && gap != 0;
                 // save primal solution and copy back dual
                 std::copy(model.primalRowSolution(),
                           model.primalRowSolution() + numberRows,
@@ -594,10 +598,18 @@ namespace masonry
                       columnPrimal.end(),
                       model.primalColumnSolution());
           }
-          const double saveScale = model.objectiveScale();
-          model.setObjectiveScale(1.0e-3);
-          model.primal(2);
-          model.setObjectiveScale(saveScale);
+          // Clp repeats the values pass here; after an optimal one it
+          // starts from that pass's optimal basis and values and does
+          // nothing but refactorise (0 pivots in all 158 LPs of the
+          // Bothwell genetic-algorithm benchmark), about 2 % of an LP's
+          // time (contrib/benchmarks/lp_solvers/results-2026-11-25d.md)
+          if (!optimal_values_pass)
+            {
+              const double saveScale = model.objectiveScale();
+              model.setObjectiveScale(1.0e-3);
+              model.primal(2);
+              model.setObjectiveScale(saveScale);
+            }
           model.primal(1);
         }
       else if (barrierStatus == 4)

@@ -22,8 +22,10 @@ namespace masonry
      * and presolve off (the optimum, vertex and iterations are
      * identical), except that the ordering and symbolic factorisation of
      * the normal matrix A D A^T are reused from an earlier solve (in this
-     * thread) of an LP with the same sparsity pattern, and that A D A^T is
-     * assembled only in its lower triangle.
+     * thread) of an LP with the same sparsity pattern, that A D A^T is
+     * assembled only in its lower triangle, and that the crossover's second
+     * primal values pass is skipped when the first one ended optimal (it
+     * would start from that optimal basis and values).
      */
     void
     barrier_with_crossover(ClpSimplex &model);
