@@ -168,7 +168,7 @@ namespace masonry
         system.distribute_dofs();
         const auto spacing = mesh_spacing(settings.mesh);
         joints             = find_joints(system.dof_handler, geometry.height);
-        system.setup(joints, geometry, settings.platen);
+        system.setup(joints, geometry, settings.platen, settings.mesh.gauss);
         specimen = make_specimen(triangulation,
                                  geometry.n_bricks,
                                  joints,

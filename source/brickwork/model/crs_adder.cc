@@ -106,14 +106,16 @@ namespace masonry
         for (const auto dof : dofs)
           if (constrained[dof])
             any_constrained = true;
-        // the entries this element adds must all be in the sparsity
-        bool usable = !p.fallback && (p.complete || any_constrained);
+        // the entries this element adds must all be in the sparsity (a
+        // zero is not added: a joint's entries between nodes that do not
+        // face each other, with Lobatto points, are left out of it)
+        bool usable = !p.fallback;
         if (usable && !p.complete)
           for (unsigned int i = 0; i < n && usable; ++i)
             for (unsigned int j = 0; j < n && usable; ++j)
               if ((constrained[dofs[i]] || constrained[dofs[j]] ?
                      i == j && constrained[dofs[i]] :
-                     true) &&
+                     k(i, j) != 0.) &&
                   p.positions[n * i + j] < 0)
                 usable = false;
         if (!usable)

@@ -40,12 +40,16 @@ namespace masonry
 
         /**
          * Platen conditions, the gauge, the sparsity of bricks and
-         * @p joints, the matrix and vectors.
+         * @p joints, the matrix and vectors. @p gauss: the joints'
+         * integration points; with Lobatto points (the nodes) a joint
+         * couples each node only with the node facing it, so only those
+         * pairs are in the sparsity.
          */
         void
         setup(const Joints         &joints,
               const Geometry       &geometry,
-              const PlatenSettings &platen);
+              const PlatenSettings &platen,
+              const bool            gauss);
 
         /** The constraints of the increments: platen DOFs and @p orphans
          * (the DOFs in no remaining cell). */
