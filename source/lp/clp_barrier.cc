@@ -527,9 +527,8 @@ namespace masonry
                 model.setObjectiveScale(1.0e-3);
                 model.primal(2);
                 model.setObjectiveScale(saveScale);
-                // (nothing below changes the basis or the primal values
-                // unless the dual pass runs)
-                optimal_values_pass = model.isProvenOptimal() && gap != 0;
+                // (nothing below changes the basis or the primal values)
+                optimal_values_pass = model.isProvenOptimal();
                 // save primal solution and copy back dual
                 std::copy(model.primalRowSolution(),
                           model.primalRowSolution() + numberRows,
@@ -583,9 +582,15 @@ namespace masonry
                           lower[i] = upper[i];
                       }
                   }
-                // just dual values pass
-                if (!gap)
-                  model.dual(2);
+                // Clp runs a dual values pass here when the barrier's
+                // complementarity gap is exactly 0. Not here: on the
+                // Bothwell settlement with Mohr-Coulomb joints at 24 x 32
+                // blocks per half (gap 0) it had not ended after 13 CPU
+                // minutes, while the primal passes below finish the LP in 46 s;
+                // at 6 x 8 (gap 0 too) it made one pivot. The primal values
+                // pass and the primal simplex alone reach the optimum (every
+                // rigid example within 2e-12 of before,
+                // contrib/benchmarks/lp_solvers/results-2026-11-27.md)
                 std::copy(saveCost.begin(), saveCost.end(), cost);
                 std::copy(saveL.begin(), saveL.end(), lower);
                 std::copy(saveU.begin(), saveU.end(), upper);
