@@ -706,6 +706,7 @@ namespace masonry
         summary["factorisations"]          = s.n_factorisations;
         summary["reuse_gmres_solves"]      = s.n_reuse_solves;
         summary["reuse_gmres_iterations"]  = s.n_reuse_iterations;
+        summary["chord_solves"]            = s.n_chord_solves;
         summary["deleted_cells"]           = specimen.n_deleted;
         summary["direct_solver_fallbacks"] = s.n_direct_fallbacks;
         step_control->write_summary(summary);

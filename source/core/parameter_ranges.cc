@@ -141,6 +141,8 @@ namespace masonry
         // back to nothing (1e-10 m) instead
         {"Wallette/Maximum Newton iterations", 2, 1000, "iterations"},
         {"Wallette/Factorisation reuse iterations", 0, 1000, "iterations"},
+        // a chord correction must at least halve the residual to pay
+        {"Wallette/Newton chord contraction", 0, 0.5, "(dimensionless)"},
         {"Wallette/Unloading stress", 0, 1e9, "Pa"},
         {"Wallette/Platen direction", -1e3, 1e3, "(dimensionless)", 3, ","},
         {"Wallette/Cycle amplitudes", 0, 1, "(dimensionless)", 1, ",", true},

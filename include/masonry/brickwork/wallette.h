@@ -155,6 +155,11 @@ namespace masonry
        * (`Residual reference' = largest reaction), not against the
        * present reactions only (present reaction). */
       bool largest_reaction_reference = false;
+      /** A full Newton correction that left at most this fraction of the
+       * residual is followed by chord corrections with the same LU
+       * factorisation while each leaves at most this fraction (`Newton
+       * chord contraction'; 0: none). */
+      double chord_contraction = 0.1;
     };
 
     /** The linear solver (`Linear solver', `Linear solver tolerance'). */

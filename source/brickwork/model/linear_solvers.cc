@@ -47,6 +47,14 @@ namespace masonry
           std::chrono::duration<double>(Clock::now() - start).count();
       }
 
+      void
+      LinearSolver::solve_with_kept_factors(System &,
+                                            System::Vector &,
+                                            const System::Vector &)
+      {
+        AssertThrow(false, ExcInternalError());
+      }
+
       namespace
       {
         /** What MUMPS's INFOG(1) < 0 means (MUMPS users' guide, section
@@ -134,6 +142,25 @@ namespace masonry
           forget() override
           {
             is_initial = false;
+          }
+
+          bool
+          has_kept_factors() const override
+          {
+            return direct != nullptr && factorised;
+          }
+
+          void
+          solve_with_kept_factors(System &,
+                                  System::Vector       &du,
+                                  const System::Vector &rhs) override
+          {
+            const auto start = Clock::now();
+            ++statistics.n_solves;
+            ++statistics.n_chord_solves;
+            apply_factors(du, rhs);
+            statistics.seconds +=
+              std::chrono::duration<double>(Clock::now() - start).count();
           }
 
         protected:

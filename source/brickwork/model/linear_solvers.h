@@ -32,6 +32,9 @@ namespace masonry
         unsigned int n_reuse_solves = 0, n_reuse_iterations = 0;
         /** Numeric factorisations. */
         unsigned int n_factorisations = 0;
+        /** Solves with the kept factorisation of an earlier tangent
+         * (chord steps of Newton). */
+        unsigned int n_chord_solves = 0;
         /** Krylov solves that did not converge and were done by MUMPS. */
         unsigned int n_direct_fallbacks = 0;
         /** Wall time in solves, s. */
@@ -62,6 +65,22 @@ namespace masonry
               System::Vector       &du,
               const System::Vector &rhs,
               const bool            initial_tangent);
+
+        /** Whether a factorisation of an earlier tangent is kept that
+         * solve_with_kept_factors() can use. */
+        virtual bool
+        has_kept_factors() const
+        {
+          return false;
+        }
+
+        /** du = the kept factorisation's inverse times @p rhs (a chord
+         * step of Newton: the tangent is not factorised anew); only when
+         * has_kept_factors(). */
+        virtual void
+        solve_with_kept_factors(System               &system,
+                                System::Vector       &du,
+                                const System::Vector &rhs);
 
         /** The matrix changed its structure of values for good (cells were
          * deleted): a kept factorisation or preconditioner of the initial

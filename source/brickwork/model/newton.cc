@@ -85,12 +85,21 @@ namespace masonry
         system.set_platen(system.u, displacement);
         System::Vector r(system.owned, system.comm),
           du(system.owned, system.comm), u_start(system.owned, system.comm);
+        // the next correction with the kept factorisation (a chord step):
+        // the last full correction reduced the residual by the chord
+        // contraction, so the tangent has hardly changed since it was
+        // factorised; system.f_int then holds the forces at system.u
+        bool chord = false;
         try
           {
-            for (iterations = 0; iterations <= settings.max_newton;
-                 ++iterations)
+            // iterations: the Newton corrections (each with a new tangent);
+            // the chord corrections are not counted
+            for (iterations = 0;;)
               {
-                assembler.assemble(true, time_step);
+                const bool use_kept = chord;
+                chord               = false;
+                if (!use_kept)
+                  assembler.assemble(true, time_step);
                 r = system.f_int;
                 r *= -1;
                 system.zero_constraints.set_zero(r);
@@ -106,7 +115,7 @@ namespace masonry
                   }
                 if (converged(norm, all, reference, reaction))
                   return true;
-                if (iterations == settings.max_newton)
+                if (!use_kept && iterations == settings.max_newton)
                   {
                     std::ostringstream m;
                     m << "the residual was still " << norm
@@ -118,7 +127,10 @@ namespace masonry
                 du = 0;
                 try
                   {
-                    solver.solve(system, du, r, assembler.initial_tangent());
+                    if (use_kept)
+                      solver.solve_with_kept_factors(system, du, r);
+                    else
+                      solver.solve(system, du, r, assembler.initial_tangent());
                   }
                 catch (const LinearSolverFailure &e)
                   {
@@ -138,6 +150,29 @@ namespace masonry
                 system.zero_constraints.set_zero(du);
                 u_start = system.u;
                 system.u.add(1., du);
+                if (use_kept)
+                  {
+                    // one trial: converged, or better (go on from there),
+                    // or worse (back to where it started: the next
+                    // correction is the Newton one it would have been)
+                    assembler.assemble(false, time_step);
+                    r = system.f_int;
+                    system.zero_constraints.set_zero(r);
+                    const double n      = r.l2_norm();
+                    const bool   better = std::isfinite(n) && n < norm;
+                    if (better && converged(n,
+                                            system.f_int.l2_norm(),
+                                            reference,
+                                            reaction))
+                      return true;
+                    if (better)
+                      chord = n <= settings.chord_contraction * norm;
+                    else
+                      system.u = u_start;
+                    continue;
+                  }
+                ++iterations;
+                double alpha = 1, accepted = 0;
                 if (settings.line_search && line_search(system,
                                                         assembler,
                                                         u_start,
@@ -145,11 +180,14 @@ namespace masonry
                                                         norm,
                                                         time_step,
                                                         reference,
-                                                        reaction))
-                  {
-                    ++iterations;
-                    return true;
-                  }
+                                                        reaction,
+                                                        alpha,
+                                                        accepted))
+                  return true;
+                chord = settings.chord_contraction > 0 &&
+                        settings.line_search && alpha == 1 &&
+                        accepted <= settings.chord_contraction * norm &&
+                        solver.has_kept_factors();
               }
           }
         catch (const std::exception &e)
@@ -168,7 +206,9 @@ namespace masonry
                           const double          norm0,
                           const double          time_step,
                           const double          reference,
-                          double               &reaction) const
+                          double               &reaction,
+                          double               &accepted_alpha,
+                          double               &accepted_norm) const
       {
         // backtracking on the residual norm
         System::Vector r(system.owned, system.comm);
@@ -201,6 +241,8 @@ namespace masonry
             system.u = u_start;
             system.u.add(best_alpha, du);
           }
+        accepted_alpha = best_alpha;
+        accepted_norm  = best;
         return false;
       }
     } // namespace model

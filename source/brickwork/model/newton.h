@@ -1,6 +1,7 @@
 /**
  * @file
- * Newton-Raphson for one load step, with a backtracking line search.
+ * Newton-Raphson for one load step, with a backtracking line search and
+ * chord corrections near the solution.
  */
 #ifndef masonry_brickwork_model_newton_h
 #define masonry_brickwork_model_newton_h
@@ -33,13 +34,17 @@ namespace masonry
         /**
          * Move the platen to @p displacement (m) and iterate from the
          * current solution; whether the step converged, and the number of
-         * @p iterations. A material or solver failure counts as no
-         * convergence (the caller cuts the step back). A step that failed on
-         * a number that is not finite names where in @p non_finite (else
-         * it is left empty): "the stresses of the bricks (Newton iteration
-         * 2)", ...; @p failure: why a step that did not converge failed,
-         * in a few words ("MUMPS could not factorise the tangent: INFOG(1)
-         * = -10, ... (Newton iteration 3)", "the residual ... after 50
+         * @p iterations (Newton corrections, each with a new tangent: a
+         * full correction that leaves at most `Newton chord contraction' of
+         * the residual is followed by chord corrections with the same
+         * factorisation while each does as well, not counted here and not
+         * against `Maximum Newton iterations'). A material or solver failure
+         * counts as no convergence (the caller cuts the step back). A step that
+         * failed on a number that is not finite names where in @p non_finite
+         * (else it is left empty): "the stresses of the bricks (Newton
+         * iteration 2)", ...; @p failure: why a step that did not converge
+         * failed, in a few words ("MUMPS could not factorise the tangent:
+         * INFOG(1) = -10, ... (Newton iteration 3)", "the residual ... after 50
          * Newton iterations").
          *
          * @p reference: the largest norm of the platen reactions of the
@@ -71,7 +76,9 @@ namespace masonry
                   double      &reaction) const;
 
         /** The line search after the correction @p du from @p u_start;
-         * true when it lands on a converged state. */
+         * true when it lands on a converged state. Otherwise the step length
+         * taken and the residual norm there in @p accepted_alpha and
+         * @p accepted_norm. */
         bool
         line_search(System               &system,
                     Assembler            &assembler,
@@ -80,7 +87,9 @@ namespace masonry
                     const double          norm0,
                     const double          time_step,
                     const double          reference,
-                    double               &reaction) const;
+                    double               &reaction,
+                    double               &accepted_alpha,
+                    double               &accepted_norm) const;
 
         NewtonSettings settings;
         double         minimum_force;
