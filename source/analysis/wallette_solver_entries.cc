@@ -143,6 +143,24 @@ namespace masonry
         "changes little (elastic legs, IMPL-EX steps); the Newton "
         "iterates differ from those of the direct solve by the linear "
         "tolerance, the converged states by the `Newton tolerance'.");
+      prm.declare_entry(
+        "IMPL-EX floor correction",
+        "accept",
+        Selection("accept|iterate"),
+        "What IMPL-EX does with a step at `IMPL-EX minimum step' whose "
+        "damage error is still over `IMPL-EX damage tolerance': `accept' "
+        "keeps it (counted in implex_steps_over_tolerance); `iterate' "
+        "solves the step again with the states of its own update frozen "
+        "(not extrapolated), updates them at the new displacements, and "
+        "repeats until the update changes no damage by more than the "
+        "tolerance (a fixed-point iteration towards the implicit "
+        "solution of the step, each pass a step of positive tangent), at "
+        "most 30 passes; so the states the run keeps are as close to "
+        "equilibrium as those of any accepted step. summary.json: "
+        "implex_steps_corrected, and implex_steps_uncorrected for steps "
+        "still over the tolerance after the passes (kept) or whose "
+        "solve failed (the IMPL-EX step is kept). Needs `Nonlocal "
+        "length' = 0.");
       prm.declare_entry("Linear solver tolerance",
                         "1e-10",
                         Double(0),
@@ -181,6 +199,8 @@ namespace masonry
         prm.get_integer("Factorisation reuse iterations");
       s.linear_solver.linear_solver    = prm.get("Linear solver");
       s.linear_solver.linear_tolerance = positive("Linear solver tolerance");
+      s.integrator.implex_floor_correction =
+        prm.get("IMPL-EX floor correction") == "iterate";
     }
   } // namespace analysis
 } // namespace masonry

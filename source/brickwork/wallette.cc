@@ -27,6 +27,7 @@
 #include "model/bounds.h"
 #include "model/checkpoint.h"
 #include "model/deletion.h"
+#include "model/floor_correction.h"
 #include "model/integrator.h"
 #include "model/linear_solvers.h"
 #include "model/mesh.h"
@@ -34,6 +35,7 @@
 #include "model/regions.h"
 #include "model/report.h"
 #include "model/step_control.h"
+#include "model/stop_messages.h"
 #include "model/system.h"
 #include "model/view.h"
 #include "postprocess/builtin.h"
@@ -178,6 +180,10 @@ namespace masonry
                       settings.integrator.implex,
                     ExcMessage("Brick material: `Nonlocal length' > 0 needs "
                                "`Damage integration = implex'"));
+        AssertThrow(material.nonlocal_length() == 0 ||
+                      !settings.integrator.implex_floor_correction,
+                    ExcMessage("Brick material: `Nonlocal length' > 0 needs "
+                               "`IMPL-EX floor correction = accept'"));
         // point states: 8 per cell, 4 per joint face, as the laws declare
         std::vector<unsigned int> owned_bricks, owned_joints, owned_splitting;
         for (const auto &cell : triangulation.active_cell_iterators())
@@ -290,21 +296,6 @@ namespace masonry
                 bricks.accept(8 * cell->active_cell_index() + q, older);
         // the deletion and the output evaluate the law with them
         specimen.nonlocal_factors = assembler->nonlocal_factors();
-      }
-
-      /** The entries to look at when @p stage (Assembler::non_finite(),
-       * Newton) holds a number that is not finite. */
-      std::string
-      likely_entries(const std::string &stage)
-      {
-        if (stage.find("bricks") != std::string::npos)
-          return "the entries of `subsection Brick material' (moduli, "
-                 "strengths, fracture energies)";
-        if (stage.find("joints") != std::string::npos)
-          return "the entries of `subsection Interface law' (stiffnesses, "
-                 "strengths, fracture energies)";
-        return "`Linear solver' and `Maximum damage' of the interface law "
-               "(a fully debonded joint leaves a singular tangent)";
       }
 
       bool
@@ -446,6 +437,17 @@ namespace masonry
         // the physical bound on the platen stress (model/bounds.h)
         const std::array<double, 2> bound = bound_materials(material, mortar);
         System::Vector              u_converged(system.u);
+        FloorCorrection             correction({bricks,
+                                                joint_points,
+                                                splitting_points,
+                                                material,
+                                                law,
+                                                splitting_law},
+                                   *integrator,
+                                   *step_control,
+                                   settings.integrator.implex_tolerance,
+                                   context.mpi_communicator,
+                                   pcout);
         // along the direction: positive displacement is the loading sense
         while (progress.segment < legs.size())
           {
@@ -472,7 +474,9 @@ namespace masonry
             // the predictor: the last step's displacement increment scaled
             // to this one (zero after a reversal or a deletion); the
             // platen DOFs are set by the Newton step
-            if (settings.newton.extrapolated_predictor && ratio > 0)
+            // (a correction starts from the IMPL-EX solution)
+            if (settings.newton.extrapolated_predictor && ratio > 0 &&
+                !correction.active())
               system.u.add(ratio, system.last_increment);
             unsigned int its      = 0;
             double       reaction = 0;
@@ -488,6 +492,12 @@ namespace masonry
                                               non_finite,
                                               failure);
             statistics.total_newton += its;
+            if (!ok && correction.active())
+              {
+                system.u = u_converged;
+                correction.fail(failure);
+                continue;
+              }
             if (!ok)
               {
                 system.u = u_converged;
@@ -501,43 +511,18 @@ namespace masonry
                   ++consecutive_cutbacks > settings.protocol.max_cutbacks;
                 if (too_many || progress.increment < lower_bound)
                   {
-                    // why the step control gave up, honestly: the count
-                    // restarts at every converged step, the bound does not
-                    std::ostringstream why;
-                    why << consecutive_cutbacks - 1
-                        << " halvings since the last converged step, "
-                        << statistics.total_cutbacks
-                        << " failed attempts in the run";
-                    if (too_many)
-                      why << "; `Maximum cut-backs' = "
-                          << settings.protocol.max_cutbacks
-                          << " halvings in a row did not help";
-                    else
-                      why << "; the step reached its lower bound, the "
-                             "nominal step / 2^`Maximum cut-backs' = "
-                          << lower_bound << " m";
-                    std::ostringstream m;
-                    if (!non_finite.empty())
-                      {
-                        // a smaller step did not help: a bad model
-                        m << "a number that is not finite (nan or inf) in "
-                          << non_finite << " at platen displacement " << next
-                          << " m, also with a step of " << taken << " m ("
-                          << why.str() << "; last converged: " << applied
-                          << " m); check " << likely_entries(non_finite)
-                          << "; results up to there are written";
-                        status = "failed";
-                      }
-                    else
-                      {
-                        m << "no convergence at platen displacement " << next
-                          << " m with a step of " << taken << " m ("
-                          << why.str() << "; last converged: " << applied
-                          << " m); the last attempt: " << failure
-                          << "; results up to there are written";
-                        status = "not converged";
-                      }
-                    message = m.str();
+                    message =
+                      cutback_stop_message({consecutive_cutbacks - 1,
+                                            statistics.total_cutbacks,
+                                            settings.protocol.max_cutbacks,
+                                            too_many,
+                                            lower_bound,
+                                            next,
+                                            taken,
+                                            applied,
+                                            non_finite,
+                                            failure},
+                                           status);
                     pcout << "Stopped: " << message << "\n";
                     break;
                   }
@@ -566,13 +551,29 @@ namespace masonry
                 pcout << "Stopped: " << message << "\n";
                 break;
               }
-            if (step_control->redo(taken, error, progress))
+            if (correction.active())
               {
-                system.u = u_converged;
-                pcout << "  IMPL-EX: step redone (damage error " << error
-                      << "), step " << progress.increment << " m\n";
-                continue;
+                if (correction.again())
+                  continue;
               }
+            else
+              {
+                const Verdict verdict =
+                  step_control->judge(taken, error, progress);
+                if (verdict == Verdict::redo)
+                  {
+                    system.u = u_converged;
+                    pcout << "  IMPL-EX: step redone (damage error " << error
+                          << "), step " << progress.increment << " m\n";
+                    continue;
+                  }
+                if (verdict == Verdict::correct && correction.wanted())
+                  {
+                    correction.start(error);
+                    continue;
+                  }
+              }
+            correction.accepted();
             accept_step();
             progress.last_increment = taken;
             progress.largest_reaction =
@@ -631,36 +632,15 @@ namespace masonry
             small_steps = taken < stall_floor ? small_steps + 1 : 0;
             if (small_steps == 0)
               recent_non_finite.clear();
-            if (small_steps >= stall_steps && !recent_non_finite.empty())
-              {
-                // cut back before a non-finite number again and again
-                std::ostringstream m;
-                m << "a number that is not finite (nan or inf) in "
-                  << recent_non_finite << " whenever the platen moves past "
-                  << next << " m: the steps shrank below " << stall_floor
-                  << " m without getting past it; check "
-                  << likely_entries(recent_non_finite)
-                  << "; results up to there are written";
-                status  = "failed";
-                message = m.str();
-                pcout << "Stopped: " << message << "\n";
-                break;
-              }
             if (small_steps >= stall_steps)
               {
-                std::ostringstream m;
-                m << "no progress: the last " << stall_steps
-                  << " steps were all smaller than "
-                  << stall_floor / nominal * (1 + 1e-9)
-                  << " x the nominal step (the last " << taken
-                  << " m, at platen displacement " << next << " m); check "
-                  << (settings.integrator.implex ?
-                        "`IMPL-EX damage tolerance', `IMPL-EX minimum step'" :
-                        "`Maximum Newton iterations', `Newton tolerance'")
-                  << " and `Step growth factor'; results up to there are "
-                     "written";
-                status  = "stalled";
-                message = m.str();
+                message = stall_message(recent_non_finite,
+                                        stall_floor,
+                                        nominal,
+                                        taken,
+                                        next,
+                                        settings.integrator.implex,
+                                        status);
                 pcout << "Stopped: " << message << "\n";
                 break;
               }
@@ -673,7 +653,7 @@ namespace masonry
             if ((interval > 0 && progress.step % interval == 0) || last)
               for (auto &pp : postprocessors)
                 pp->output(*view, progress.step, curve.back().strain);
-            step_control->after_step(its, error, progress);
+            step_control->after_step(its, progress);
             if (settings.checkpoint.checkpoint_interval > 0 &&
                 progress.step % settings.checkpoint.checkpoint_interval == 0)
               save("running");

@@ -188,6 +188,10 @@ namespace masonry
        * of the nominal step (a softening snap keeps the damage error large
        * however small the step). */
       double implex_minimum_step = 0.01;
+      /** IMPL-EX: a step at the floor whose damage error is over the
+       * tolerance is solved again with its own updated states, frozen,
+       * until their update no longer changes them (else it is accepted). */
+      bool implex_floor_correction = false;
       /** Threads per MPI rank that evaluate the laws of the cells and
        * interfaces in an assembly (`Assembly threads'; 0: deal.II's
        * default, the cores divided among the ranks). */

@@ -109,7 +109,8 @@ namespace masonry
         };
 
         /** IMPL-EX: extrapolated and frozen internal variables within the
-         * step, the implicit update after it. */
+         * step, the implicit update after it; the other modes of
+         * set_mode(). */
         class Implex : public Integrator
         {
         public:
@@ -120,6 +121,8 @@ namespace masonry
                            const unsigned int                   p,
                            const BrickPoint &point) const override
           {
+            if (mode == Mode::frozen)
+              return material.is_elastic(strain, states.frozen(p), point);
             return material.is_elastic(strain, states.old(p), point) &&
                    material.is_elastic(strain, states.older(p), point);
           }
@@ -133,17 +136,16 @@ namespace masonry
                          dealii::SymmetricTensor<2, 3>       &stress,
                          dealii::SymmetricTensor<4, 3> *tangent) const override
           {
+            // frozen: the kept state, not extrapolated
+            const bool     f     = mode == Mode::frozen;
+            ConstStateView a     = f ? states.frozen(p) : states.old(p);
+            ConstStateView b     = f ? states.frozen(p) : states.older(p);
+            const double   ratio = f ? 0. : this->ratio;
             if (tangent)
-              material.evaluate_extrapolated(strain,
-                                             states.old(p),
-                                             states.older(p),
-                                             ratio,
-                                             point,
-                                             stress,
-                                             *tangent);
+              material.evaluate_extrapolated(
+                strain, a, b, ratio, point, stress, *tangent);
             else
-              material.extrapolated_stress(
-                strain, states.old(p), states.older(p), ratio, point, stress);
+              material.extrapolated_stress(strain, a, b, ratio, point, stress);
           }
 
           bool
@@ -153,6 +155,8 @@ namespace masonry
                            const unsigned int    p,
                            const InterfacePoint &point) const override
           {
+            if (mode == Mode::frozen)
+              return law.is_elastic(jump, states.frozen(p), point);
             return law.is_elastic(jump, states.old(p), point) &&
                    law.is_elastic(jump, states.older(p), point);
           }
@@ -170,15 +174,19 @@ namespace masonry
                          Local3               &t,
                          Local33              &D) const override
           {
-            law.evaluate_extrapolated(
-              jump, states.old(p), states.older(p), ratio, point, t, D);
+            if (mode == Mode::frozen)
+              law.evaluate_extrapolated(
+                jump, states.frozen(p), states.frozen(p), 0., point, t, D);
+            else
+              law.evaluate_extrapolated(
+                jump, states.old(p), states.older(p), ratio, point, t, D);
           }
 
           ConstStateView
           step_state(const PointStates &states,
                      const unsigned int p) const override
           {
-            return states.old(p);
+            return mode == Mode::frozen ? states.frozen(p) : states.old(p);
           }
 
           bool
@@ -191,6 +199,8 @@ namespace masonry
           after_step(Assembler   &assembler,
                      const double time_step) const override
           {
+            // (frozen: the error against the extrapolation means nothing;
+            // the caller compares the update with the frozen states)
             return assembler.update_states(*this, time_step);
           }
         };

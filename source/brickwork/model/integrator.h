@@ -46,6 +46,31 @@ namespace masonry
           return ratio;
         }
 
+        /**
+         * IMPL-EX: how the laws are evaluated in the present step.
+         * `extrapolated': the step of IMPL-EX. `frozen': with the states
+         * that PointStates::freeze() kept, not extrapolated: the correction
+         * of a step at the floor whose damage error is over the tolerance
+         * (`IMPL-EX floor correction'), solved again with its own updated
+         * states until their update no longer changes them. No effect on
+         * the implicit integrator.
+         */
+        enum class Mode
+        {
+          extrapolated,
+          frozen
+        };
+        void
+        set_mode(const Mode m)
+        {
+          mode = m;
+        }
+        Mode
+        get_mode() const
+        {
+          return mode;
+        }
+
         /** Whether brick point @p p responds with the initial elastic
          * stiffness at @p strain. */
         virtual bool
@@ -114,6 +139,7 @@ namespace masonry
 
       protected:
         double ratio = 0;
+        Mode   mode  = Mode::extrapolated;
       };
 
       /** The integrator `Damage integration' selects. */

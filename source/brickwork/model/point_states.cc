@@ -7,6 +7,7 @@
 #include "point_states.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace masonry
 {
@@ -24,9 +25,10 @@ namespace masonry
         old_values.resize(n_points * n);
         for (unsigned int p = 0; p < n_points; ++p)
           std::copy(initial.begin(), initial.end(), old_values.begin() + p * n);
-        new_values   = old_values;
-        older_values = old_values;
-        checkpointed = points;
+        new_values    = old_values;
+        older_values  = old_values;
+        frozen_values = old_values;
+        checkpointed  = points;
       }
 
       void
@@ -43,6 +45,26 @@ namespace masonry
                       n,
                       older_values.begin() + p * n);
         std::copy_n(new_values.begin() + p * n, n, old_values.begin() + p * n);
+      }
+
+      double
+      PointStates::largest_damage_change(const PointLaw &law) const
+      {
+        std::vector<double> a(law.damage_names().size()), b(a.size());
+        double              change = 0;
+        for (const unsigned int p : checkpointed)
+          {
+            law.damages(updated(p), dealii::make_array_view(a));
+            law.damages(frozen(p), dealii::make_array_view(b));
+            for (unsigned int k = 0; k < a.size(); ++k)
+              {
+                const double d = std::abs(a[k] - b[k]);
+                if (!std::isfinite(d))
+                  return d;
+                change = std::max(change, d);
+              }
+          }
+        return change;
       }
 
       std::vector<double>

@@ -67,6 +67,26 @@ namespace masonry
           return {new_values.data() + p * n, n};
         }
 
+        /** The state of point @p p that freeze() kept. */
+        ConstStateView
+        frozen(const unsigned int p) const
+        {
+          return {frozen_values.data() + p * n, n};
+        }
+
+        /** Keep every point's updated state (frozen()). */
+        void
+        freeze()
+        {
+          frozen_values = new_values;
+        }
+
+        /** The largest difference between a damage of @p law in the
+         * updated and the frozen state over this rank's points
+         * (checkpointed ones; NaN if one is not finite). */
+        double
+        largest_damage_change(const PointLaw &law) const;
+
         /** The point's updated state is its converged one (no change). */
         void
         keep(const unsigned int p);
@@ -96,8 +116,8 @@ namespace masonry
         void
         scatter(const std::vector<double> &data);
 
-        unsigned int              n = 0, count = 0;
-        std::vector<double>       old_values, new_values, older_values;
+        unsigned int        n = 0, count = 0;
+        std::vector<double> old_values, new_values, older_values, frozen_values;
         std::vector<unsigned int> checkpointed;
       };
     } // namespace model

@@ -155,10 +155,17 @@ namespace masonry
         return true;
       }
 
-      bool
-      StepSizeControl::redo(const double, const double, Progress &)
+      Verdict
+      StepSizeControl::judge(const double, const double, Progress &)
       {
-        return false;
+        return Verdict::accept;
+      }
+
+      void
+      StepSizeControl::corrected(const bool converged)
+      {
+        ++(converged ? n_corrected : n_uncorrected);
+        was_corrected = converged;
       }
 
       void
@@ -180,9 +187,7 @@ namespace masonry
           {}
 
           void
-          after_step(const unsigned int its,
-                     const double,
-                     Progress &progress) override
+          after_step(const unsigned int its, Progress &progress) override
           {
             progress.easy_steps =
               its <= std::max(2u, max_newton / 3) ? progress.easy_steps + 1 : 0;
@@ -205,7 +210,8 @@ namespace masonry
          * tolerance is redone smaller, down to the floor: otherwise the
          * first step that re-enters the envelope (elastic, nothing to
          * extrapolate from) overshoots the cycle peak by up to E0 x the
-         * step.
+         * step. At the floor it is accepted or (`IMPL-EX floor correction
+         * = iterate') corrected.
          */
         class DamageErrorControl : public StepSizeControl
         {
@@ -217,40 +223,44 @@ namespace masonry
             , floor(s.implex_minimum_step * nominal)
             , growth(growth)
             , nominal(nominal)
+            , correct(s.implex_floor_correction)
           {}
 
-          bool
-          redo(const double taken,
-               const double error,
-               Progress    &progress) override
+          Verdict
+          judge(const double taken,
+                const double error,
+                Progress    &progress) override
           {
-            if (error > tolerance && taken > floor * (1 + 1e-12))
+            last_ratio = error / tolerance;
+            if (last_ratio > 1 && taken > floor * (1 + 1e-12))
               {
                 ++n_redone;
-                progress.increment = std::max(shrunk(taken, error), floor);
-                return true;
+                progress.increment = std::max(shrunk(taken), floor);
+                return Verdict::redo;
               }
+            if (last_ratio > 1 && correct)
+              return Verdict::correct;
             max_error = std::max(max_error, error);
-            return false;
+            return Verdict::accept;
           }
 
           void
-          after_step(const unsigned int,
-                     const double error,
-                     Progress    &progress) override
+          after_step(const unsigned int, Progress &progress) override
           {
             double &increment = progress.increment;
-            if (error > tolerance)
+            if (last_ratio > 1)
               {
                 // accepted only at (or below) the floor: shrink, but not
                 // below the floor (and never raise a step that a cut-back
-                // made smaller still)
-                ++n_over_tolerance;
-                increment = std::max(shrunk(increment, error),
-                                     std::min(increment, floor));
+                // made smaller still); an implicit step is exact
+                if (!was_corrected)
+                  ++n_over_tolerance;
+                increment =
+                  std::max(shrunk(increment), std::min(increment, floor));
               }
-            else if (error < 0.5 * tolerance)
+            else if (last_ratio < 0.5)
               increment = std::min(increment * growth, nominal);
+            was_corrected = false;
           }
 
           void
@@ -259,18 +269,24 @@ namespace masonry
             summary["implex_max_damage_error"]     = max_error;
             summary["implex_steps_over_tolerance"] = n_over_tolerance;
             summary["implex_steps_redone"]         = n_redone;
+            if (correct)
+              {
+                summary["implex_steps_corrected"]   = n_corrected;
+                summary["implex_steps_uncorrected"] = n_uncorrected;
+              }
           }
 
         private:
-          /** A step shrunk in proportion to the damage error (to no less
-           * than a fifth). */
+          /** A step shrunk in proportion to the damage error of the last
+           * judged step (to no less than a fifth). */
           double
-          shrunk(const double step, const double error) const
+          shrunk(const double step) const
           {
-            return step * std::max(0.2, 0.9 * tolerance / error);
+            return step * std::max(0.2, 0.9 / last_ratio);
           }
 
           double tolerance, floor, growth, nominal;
+          bool   correct;
         };
       } // namespace
 

@@ -11,6 +11,8 @@
 #include <masonry/brickwork/wallette.h>
 #include <masonry/core/json.h>
 
+#include <boost/serialization/version.hpp>
+
 #include <memory>
 
 namespace masonry
@@ -101,6 +103,18 @@ namespace masonry
       constexpr double       stall_fraction = 1e-3;
       constexpr unsigned int stall_steps    = 50;
 
+      /** What to do with a converged step (StepSizeControl::judge()). */
+      enum class Verdict
+      {
+        /** keep it */
+        accept,
+        /** solve it again smaller (progress.increment is set) */
+        redo,
+        /** IMPL-EX at the step floor: solve it again with its updated
+         * states */
+        correct
+      };
+
       /** How the step size follows the steps' difficulty. */
       class StepSizeControl
       {
@@ -108,25 +122,30 @@ namespace masonry
         virtual ~StepSizeControl() = default;
         /**
          * A converged step of size @p taken with damage error @p error:
-         * whether to redo it smaller (then progress.increment is set).
+         * accept it, redo it smaller, or (IMPL-EX at the floor) correct
+         * it.
          */
-        virtual bool
-        redo(const double taken, const double error, Progress &progress);
-        /** An accepted step of @p iterations Newton iterations and damage
-         * error @p error: the next increment. */
+        virtual Verdict
+        judge(const double taken, const double error, Progress &progress);
+        /** A step judged `correct' was corrected (@p converged: its
+         * damage change within the tolerance) or not (kept as it is). */
         virtual void
-        after_step(const unsigned int iterations,
-                   const double       error,
-                   Progress          &progress) = 0;
+        corrected(const bool converged);
+        /** An accepted step of @p iterations Newton iterations: the next
+         * increment, from the errors of its last judge(). */
+        virtual void
+        after_step(const unsigned int iterations, Progress &progress) = 0;
         /** Counters into summary.json. */
         virtual void
         write_summary(Json &summary) const;
-        /** Write or read the counters. */
+        /** Write or read the counters (version 1: the corrections). */
         template <class Archive>
         void
-        serialize(Archive &ar, const unsigned int)
+        serialize(Archive &ar, const unsigned int version)
         {
           ar &max_error &n_over_tolerance &n_redone;
+          if (version > 0)
+            ar &n_corrected &n_uncorrected;
         }
 
       protected:
@@ -134,6 +153,13 @@ namespace masonry
          * the tolerance (at the minimum step); steps redone. */
         double       max_error        = 0;
         unsigned int n_over_tolerance = 0, n_redone = 0;
+        /** IMPL-EX steps at the floor corrected; those whose correction
+         * did not reach the tolerance or failed. */
+        unsigned int n_corrected = 0, n_uncorrected = 0;
+        /** The damage error of the last judged step over the tolerance;
+         * whether it was then corrected. */
+        double last_ratio    = 0;
+        bool   was_corrected = false;
       };
 
       /** The control of the integrator `Damage integration' selects:
@@ -146,5 +172,7 @@ namespace masonry
     } // namespace model
   }   // namespace brickwork
 } // namespace masonry
+
+BOOST_CLASS_VERSION(masonry::brickwork::model::StepSizeControl, 1)
 
 #endif
