@@ -9,8 +9,10 @@
  * --validate as one line naming the file, the line and the entry: a mesh
  * that does not fit the english bond's closers, a fracture energy below
  * f_t^2 / (2 k_n) (the law would snap back at a point), a sideways platen
- * motion with frictionless platens, an english bond whose headers (0.31 m
- * with the joint) do not span two stretcher widths (2 x 0.1125 m).
+ * motion with frictionless platens, a nonlocal unit law with implicit
+ * damage integration or with the IMPL-EX floor correction, an english bond
+ * whose headers (0.31 m with the joint) do not span two stretcher widths
+ * (2 x 0.1125 m).
  */
 #include "brickwork_tests.h"
 #include "tests.h"
@@ -109,6 +111,28 @@ main(int argc, char **argv)
                              "  set Platen direction = 1, 0, 0\n"
                              "end\n");
   testing::check_error(testing::run({"--validate", "platen.prm"}));
+  // the units' nonlocal average is made for the IMPL-EX step without the
+  // floor correction: both other settings are refused by --validate
+  for (
+    const char *setting :
+    {"Damage integration = implicit",
+     "Damage integration = implex\n  set IMPL-EX floor correction = iterate"})
+    {
+      testing::write_file("nonlocal.prm",
+                          head +
+                            "subsection Wallette\n"
+                            "  set " +
+                            setting +
+                            "\n"
+                            "end\n"
+                            "subsection Brick material\n"
+                            "  set Model = damage plasticity\n"
+                            "  subsection Damage plasticity\n"
+                            "    set Nonlocal length = 0.02\n"
+                            "  end\n"
+                            "end\n");
+      testing::check_error(testing::run({"--validate", "nonlocal.prm"}));
+    }
   // the bond's own check (a header must span two stretcher widths), naming
   // the entry the file sets
   testing::write_file("english.prm",

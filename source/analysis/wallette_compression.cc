@@ -630,6 +630,17 @@ namespace masonry
                                        mortar_section);
           }
         law = plugins::Registry<brickwork::InterfaceLaw>::create(prm);
+        // (checked again by run_wallette() for callers of the library)
+        AssertThrow(
+          material->nonlocal_length() == 0 || s.integrator.implex,
+          ExcParameter("Nonlocal length",
+                       "a value > 0 needs `Damage integration = implex'"));
+        AssertThrow(
+          material->nonlocal_length() == 0 ||
+            !s.integrator.implex_floor_correction,
+          ExcParameter("Nonlocal length",
+                       "a value > 0 needs `IMPL-EX floor correction = "
+                       "accept'"));
         make_postprocessors(prm);
         // lay the bricks now so that --validate finds a mesh that does not
         // fit the bond

@@ -324,12 +324,21 @@ namespace masonry
                             Local3  &t,
                             Local33 &tangent) const override
       {
+        // A crack that opened in the last step is extrapolated to open
+        // further (u_p,e > u_p), while the iterate starts from the old
+        // jump: with the closure gap [u_p,e - w_e, u_p,e] the frozen
+        // response would be flat (t = 0, no stiffness) there and then
+        // stiff, a kink the Newton correction cannot see. Such a point is
+        // frozen linear on both sides of u_p,e; a closing or resting crack
+        // keeps its gap. The implicit update after the step is unchanged.
+        const bool opening = old[3] > older[3];
         law->evaluate_frozen(jump,
                              law->extrapolate(unpack(old),
                                               unpack(older),
                                               ratio),
                              t,
-                             tangent);
+                             tangent,
+                             !opening);
       }
 
       bool

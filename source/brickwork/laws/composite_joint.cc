@@ -169,14 +169,16 @@ namespace masonry
       CompositeJoint::evaluate_frozen(const Vector3             &u,
                                       const CompositeJointState &frozen,
                                       Vector3                   &t,
-                                      Matrix3                   &D) const
+                                      Matrix3                   &D,
+                                      const bool closure_gap) const
       {
         const double kn = p.normal_stiffness, ks = p.shear_stiffness;
         for (auto &row : D)
           row.fill(0.);
         double up_n = frozen.plastic_jump[0];
         D[0][0]     = kn;
-        if (p.crack_closure && frozen.crack_opening > 0 && u[0] < up_n)
+        if (closure_gap && p.crack_closure && frozen.crack_opening > 0 &&
+            u[0] < up_n)
           {
             // close the crack first, without traction
             up_n = std::max(up_n - frozen.crack_opening, u[0]);

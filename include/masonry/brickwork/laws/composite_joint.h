@@ -216,13 +216,17 @@ namespace masonry
          * fixed (the IMPL-EX step): t = diag(k_n, k_s, k_s) (u - u_p),
          * tangent diag(k_n, k_s, k_s); an open crack (crack_opening > 0)
          * pushed into compression closes without traction first, as in
-         * evaluate(). Nothing is updated.
+         * evaluate(), unless @p closure_gap is false: then the response is
+         * linear on both sides of u_p (the IMPL-EX step of a crack that
+         * opened in the last step, see CompositeInterface). Nothing is
+         * updated.
          */
         void
         evaluate_frozen(const Vector3             &jump,
                         const CompositeJointState &frozen,
                         Vector3                   &t,
-                        Matrix3                   &tangent) const;
+                        Matrix3                   &tangent,
+                        const bool                 closure_gap = true) const;
 
         /** Cap yield value sbar(kappa_3), Pa. */
         double
