@@ -304,9 +304,9 @@ namespace masonry
         "centre of the optimal face, not one of its corners), the optimum "
         "is exact only to that tolerance, `Algorithm = barrier' runs "
         "without presolve, and no basis is kept, so callers with warm "
-        "starts (the genetic algorithm, minimum thickness) use the "
-        "crossover whatever this entry says. "
-        "Unitless choice.");
+        "starts (minimum thickness) use the crossover whatever this entry "
+        "says; the genetic algorithm's evaluations (cold solves) do use "
+        "it. Unitless choice.");
       prm.declare_entry(
         "Interior point tolerance",
         "1e-6",
@@ -606,7 +606,7 @@ namespace masonry
         }
       bool dual_infeasible = false;
       // `Crossover = never': not for a caller that keeps the basis (warm
-      // starts: the genetic algorithm, minimum thickness)
+      // starts: minimum thickness)
       const bool use_interior  = no_crossover && !basis_out;
       bool       kept_interior = false, barrier_ran = false;
       Interior   interior;
