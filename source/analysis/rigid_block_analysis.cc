@@ -707,6 +707,7 @@ namespace masonry
       summary["seconds_assembly"]  = seconds_assembly;
       summary["seconds_solve"]     = seconds_solve;
       summary["cpu_seconds_solve"] = cpu_seconds_solve;
+      summary["lp_message"]        = solution.message;
       if (solution.status == lp::Status::optimal)
         summary["lp_max_violation"] = check_solution(lp, solution, context);
     }

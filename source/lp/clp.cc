@@ -20,6 +20,7 @@
 #include <unordered_map>
 
 #include "clp_barrier.h"
+#include "clp_dual.h"
 
 namespace masonry
 {
@@ -123,139 +124,12 @@ namespace masonry
         return dual;
       }
 
-      /**
-       * The rows of @p dual with a single nonzero (in Clp's explicit dual
-       * of a mechanism LP: the tension cut-off and the compression cap,
-       * each a multiplier with one entry in the normal row of its point),
-       * turned into bounds of their column and removed: the same feasible
-       * set with fewer rows, which is what the barrier's factorisations
-       * grow with. expand() maps a solution back.
-       */
-      struct SingletonRows
+      /** A barrier's interior point kept without crossover. */
+      struct Interior
       {
-        /** The removed rows, their column and coefficient. */
-        std::vector<int>    rows, columns;
-        std::vector<double> values;
-        /** The reduced model (nullptr if there was no singleton row). */
-        std::unique_ptr<ClpSimplex> model;
+        std::vector<double> x, y;
+        PairCheck           check;
       };
-
-      SingletonRows
-      without_singleton_rows(const ClpSimplex &dual)
-      {
-        SingletonRows    s;
-        CoinPackedMatrix by_row;
-        by_row.reverseOrderedCopyOf(*dual.matrix());
-        const int           m     = dual.numberRows();
-        const CoinBigIndex *start = by_row.getVectorStarts();
-        const int          *len   = by_row.getVectorLengths();
-        std::vector<double> lower(dual.columnLower(),
-                                  dual.columnLower() + dual.numberColumns());
-        std::vector<double> upper(dual.columnUpper(),
-                                  dual.columnUpper() + dual.numberColumns());
-        for (int i = 0; i < m; ++i)
-          {
-            if (len[i] != 1)
-              continue;
-            const int    j  = by_row.getIndices()[start[i]];
-            const double a  = by_row.getElements()[start[i]];
-            const double lo = dual.rowLower()[i], up = dual.rowUpper()[i];
-            // only a free column, bounded on each side by one row at
-            // most (so that the row's dual is the column's reduced cost)
-            if (a == 0 || dual.columnLower()[j] > -COIN_DBL_MAX ||
-                dual.columnUpper()[j] < COIN_DBL_MAX)
-              continue;
-            const double l = a > 0 ? lo : up, u = a > 0 ? up : lo;
-            const double bl = std::abs(l) < 1e30 ? l / a : -COIN_DBL_MAX;
-            const double bu = std::abs(u) < 1e30 ? u / a : COIN_DBL_MAX;
-            if ((bl > -COIN_DBL_MAX && bu < COIN_DBL_MAX) ||
-                (bl > -COIN_DBL_MAX && lower[j] > -COIN_DBL_MAX) ||
-                (bu < COIN_DBL_MAX && upper[j] < COIN_DBL_MAX))
-              continue;
-            if (bl > -COIN_DBL_MAX)
-              lower[j] = bl;
-            if (bu < COIN_DBL_MAX)
-              upper[j] = bu;
-            s.rows.push_back(i);
-            s.columns.push_back(j);
-            s.values.push_back(a);
-          }
-        if (s.rows.empty())
-          return s;
-        s.model = std::make_unique<ClpSimplex>(dual);
-        for (int j = 0; j < dual.numberColumns(); ++j)
-          {
-            s.model->setColumnLower(j, lower[j]);
-            s.model->setColumnUpper(j, upper[j]);
-          }
-        s.model->deleteRows(s.rows.size(), s.rows.data());
-        return s;
-      }
-
-      /**
-       * The solution and basis of the reduced model of @p s mapped to
-       * @p dual, the model it was made from: a column at a bound that came
-       * from a removed row is basic, that row at its bound with the
-       * column's reduced cost as its dual; the other removed rows are
-       * basic with dual 0.
-       */
-      void
-      expand(const SingletonRows &s, ClpSimplex &dual)
-      {
-        const ClpSimplex &r = *s.model;
-        const int         n = dual.numberColumns(), m = dual.numberRows();
-        std::vector<int>  kept_index(m, 0);
-        std::vector<bool> removed(m, false);
-        for (const int i : s.rows)
-          removed[i] = true;
-        for (int i = 0, k = 0; i < m; ++i)
-          kept_index[i] = removed[i] ? -1 : k++;
-        double *x  = dual.primalColumnSolution();
-        double *dj = dual.dualColumnSolution();
-        double *y  = dual.dualRowSolution();
-        for (int j = 0; j < n; ++j)
-          {
-            x[j]  = r.primalColumnSolution()[j];
-            dj[j] = r.dualColumnSolution()[j];
-            dual.setColumnStatus(j, r.getColumnStatus(j));
-          }
-        for (int i = 0; i < m; ++i)
-          if (kept_index[i] >= 0)
-            {
-              y[i] = r.dualRowSolution()[kept_index[i]];
-              dual.setRowStatus(i, r.getRowStatus(kept_index[i]));
-            }
-        for (unsigned int k = 0; k < s.rows.size(); ++k)
-          {
-            const int    i = s.rows[k], j = s.columns[k];
-            const double a = s.values[k];
-            y[i]           = 0;
-            dual.setRowStatus(i, ClpSimplex::basic);
-            const ClpSimplex::Status status = r.getColumnStatus(j);
-            const bool at_lower = status == ClpSimplex::atLowerBound &&
-                                  r.columnLower()[j] > -COIN_DBL_MAX;
-            const bool at_upper = status == ClpSimplex::atUpperBound &&
-                                  r.columnUpper()[j] < COIN_DBL_MAX;
-            // is the bound at which the column sits this row's?
-            const double lo = dual.rowLower()[i], up = dual.rowUpper()[i];
-            const double row_l = a > 0 ? lo : up, row_u = a > 0 ? up : lo;
-            const bool   mine = (at_lower && std::abs(row_l) < 1e30) ||
-                              (at_upper && std::abs(row_u) < 1e30);
-            if (!mine)
-              continue;
-            y[i]  = dj[j] / a;
-            dj[j] = 0;
-            dual.setColumnStatus(j, ClpSimplex::basic);
-            dual.setRowStatus(i,
-                              (at_upper) == (a > 0) ? ClpSimplex::atUpperBound :
-                                                      ClpSimplex::atLowerBound);
-          }
-        double *activity = dual.primalRowSolution();
-        std::fill(activity, activity + m, 0.);
-        dual.matrix()->times(x, activity);
-        dual.setObjectiveValue(r.objectiveValue());
-        dual.setProblemStatus(r.problemStatus());
-      }
 
       /** Clp's basis (status of every column, then of every row). */
       struct ClpBasis : public WarmStartData
@@ -331,6 +205,10 @@ namespace masonry
       std::string algorithm = "automatic";
       /** Value of `Presolve`. */
       bool presolve = true;
+      /** Whether `Crossover = never`. */
+      bool no_crossover = false;
+      /** Value of `Interior point tolerance`. */
+      double interior_tolerance = 1e-6;
 
       /**
        * solve() with an optional starting basis; on an optimal solve, the
@@ -356,6 +234,8 @@ namespace masonry
       {
         /** @p model holds a proven optimal vertex. */
         optimal,
+        /** The barrier's interior point is the result (`Crossover`). */
+        interior,
         /**
          * The simplex proved the dual LP infeasible: the LP itself has
          * no dual feasible point (it is unbounded or infeasible).
@@ -369,9 +249,11 @@ namespace masonry
        *  solved by @p method, its vertex restored into @p model, cleaned up.
        */
       DualRoute
-      solve_through_dual(ClpSimplex        &model,
-                         const std::string &method,
-                         unsigned int      &iterations) const;
+      solve_through_dual(ClpSimplex          &model,
+                         const std::string   &method,
+                         unsigned int        &iterations,
+                         const LinearProgram &lp,
+                         Interior            *interior) const;
     };
 
     void
@@ -403,6 +285,41 @@ namespace masonry
         "feasibility solve); anything else not proven optimal is solved "
         "directly by the same method. The choice comes from the "
         "measurements in contrib/benchmarks/lp_solvers. Unitless choice.");
+      prm.declare_entry(
+        "Crossover",
+        "always",
+        dealii::Patterns::Selection("always|never"),
+        "Whether Clp's barrier (`Algorithm = barrier', and the Mohr-Coulomb "
+        "route of `automatic') is followed by the crossover to a vertex "
+        "(`always') or, with `never', stops at the barrier's interior point "
+        "when Clp's barrier ends optimal and that point checks out on the LP "
+        "itself: the LP's primal values (for `automatic', read off the "
+        "duals of the explicit dual LP) violate no bound, the duals no sign "
+        "condition, by more than `Interior point tolerance' (in the LP's "
+        "scaled units), and the duality gap of the pair is at most that "
+        "tolerance relative to the objective. Otherwise the barrier runs "
+        "again and the crossover follows, as with `always' (the same result "
+        "bit for bit, after two barriers). What is lost with `never': the "
+        "solution is not a vertex (velocities and contact forces are a "
+        "centre of the optimal face, not one of its corners), the optimum "
+        "is exact only to that tolerance, `Algorithm = barrier' runs "
+        "without presolve, and no basis is kept, so callers with warm "
+        "starts (minimum thickness) use the crossover whatever this entry "
+        "says; the genetic algorithm's evaluations (cold solves) do use "
+        "it. Unitless choice.");
+      prm.declare_entry(
+        "Interior point tolerance",
+        "1e-6",
+        dealii::Patterns::Double(1e-12, 1e-3),
+        "With `Crossover = never': the largest relative duality gap, bound "
+        "violation and dual sign violation of the barrier's point that is "
+        "kept as the optimum (else the crossover runs). On the Bothwell "
+        "settlement with Mohr-Coulomb joints, 6 x 8 to 24 x 32 blocks per "
+        "half, the kept objective was within 6.1e-9 of the vertex's, but the "
+        "pair's gap (its contact forces are less accurate than its "
+        "velocities) was 1e-10 up to 9 x 12 and 9e-8 to 2.7e-7 from 12 x 16 "
+        "up (contrib/benchmarks/lp_solvers/results-2026-11-28.md). "
+        "Dimensionless.");
       prm.declare_entry("Presolve",
                         "true",
                         dealii::Patterns::Bool(),
@@ -415,8 +332,10 @@ namespace masonry
     void
     Clp::parse_parameters(dealii::ParameterHandler &prm)
     {
-      algorithm = prm.get("Algorithm");
-      presolve  = prm.get_bool("Presolve");
+      algorithm          = prm.get("Algorithm");
+      presolve           = prm.get_bool("Presolve");
+      no_crossover       = prm.get("Crossover") == "never";
+      interior_tolerance = prm.get_double("Interior point tolerance");
     }
 
     std::unique_ptr<ClpSimplex>
@@ -470,7 +389,10 @@ namespace masonry
              const bool         use_presolve) const
     {
       if (method == "barrier" && !use_presolve)
-        return barrier_with_crossover(model); // ClpSolve's steps, faster
+        {
+          barrier_with_crossover(model); // ClpSolve's steps, faster
+          return;
+        }
       ClpSolve options;
       if (method == "primal simplex")
         options.setSolveType(ClpSolve::usePrimal);
@@ -484,9 +406,11 @@ namespace masonry
     }
 
     Clp::DualRoute
-    Clp::solve_through_dual(ClpSimplex        &model,
-                            const std::string &method,
-                            unsigned int      &iterations) const
+    Clp::solve_through_dual(ClpSimplex          &model,
+                            const std::string   &method,
+                            unsigned int        &iterations,
+                            const LinearProgram &lp,
+                            Interior            *interior) const
     {
       try
         {
@@ -514,8 +438,26 @@ namespace masonry
           // (contrib/benchmarks/lp_solvers/results-2026-11-25c.md)
           if (method == "primal simplex")
             solved.scaling(0);
-          run(solved, method, false);
-          iterations += solved.numberIterations();
+          if (method == "barrier" && interior)
+            {
+              // `Crossover = never': the interior point if it checks out
+              // on the LP itself, else the crossover as below
+              const auto keep = [&](const ClpSimplex &point) {
+                interior_from_dual(
+                  model, point, reduced, interior->x, interior->y);
+                interior->check = check_pair(lp, interior->x, interior->y);
+                return interior->check.within(interior_tolerance);
+              };
+              const bool kept = barrier_with_crossover(solved, keep);
+              iterations += solved.numberIterations();
+              if (kept)
+                return DualRoute::interior;
+            }
+          else
+            {
+              run(solved, method, false);
+              iterations += solved.numberIterations();
+            }
           if (method == "barrier" && solved.isProvenPrimalInfeasible())
             {
               // the barrier's infeasibility verdict is not reliable: the
@@ -663,6 +605,29 @@ namespace masonry
             model = create(lp);
         }
       bool dual_infeasible = false;
+      // `Crossover = never': not for a caller that keeps the basis (warm
+      // starts: minimum thickness)
+      const bool use_interior  = no_crossover && !basis_out;
+      bool       kept_interior = false, barrier_ran = false;
+      Interior   interior;
+      if (!warm && algorithm == "barrier" && use_interior)
+        {
+          // the LP itself by the barrier, without presolve
+          const auto keep = [&](const ClpSimplex &point) {
+            interior.x.assign(point.primalColumnSolution(),
+                              point.primalColumnSolution() + lp.n_columns());
+            interior.y.assign(point.dualRowSolution(),
+                              point.dualRowSolution() + lp.n_rows());
+            interior.check = check_pair(lp, interior.x, interior.y);
+            return interior.check.within(interior_tolerance);
+          };
+          kept_interior = barrier_with_crossover(*model, keep);
+          // otherwise the crossover ran: as run() without presolve
+          done        = kept_interior;
+          barrier_ran = !kept_interior;
+          if (kept_interior)
+            solution.iterations += model->numberIterations();
+        }
       if (!warm && algorithm == "automatic")
         {
           // measured (contrib/benchmarks/lp_solvers): the explicit dual LP,
@@ -672,15 +637,21 @@ namespace masonry
           // fails
           method = lp.n_columns() >= lp.n_rows() ? "barrier" : "primal simplex";
           const DualRoute route =
-            solve_through_dual(*model, method, solution.iterations);
-          done            = route == DualRoute::optimal;
+            solve_through_dual(*model,
+                               method,
+                               solution.iterations,
+                               lp,
+                               use_interior ? &interior : nullptr);
+          kept_interior   = route == DualRoute::interior;
+          done            = route == DualRoute::optimal || kept_interior;
           dual_infeasible = route == DualRoute::dual_infeasible;
           if (!done && !dual_infeasible)
             model = create(lp);
         }
       if (!done && !dual_infeasible)
         {
-          run(*model, method, presolve);
+          if (!barrier_ran)
+            run(*model, method, presolve);
           solution.iterations += model->numberIterations();
         }
       if (!done && !dual_infeasible && !model->isProvenOptimal() && presolve &&
@@ -724,7 +695,17 @@ namespace masonry
           solution.iterations += model->numberIterations();
         }
 
-      if (!dual_infeasible && model->isProvenOptimal())
+      if (kept_interior)
+        {
+          const PairCheck &c = interior.check;
+          solution.status    = Status::optimal;
+          solution.x         = std::move(interior.x);
+          solution.row_duals = std::move(interior.y);
+          solution.objective = c.primal_objective;
+          solution.message   = "Clp: optimal (barrier, no crossover: " +
+                             interior.check.describe() + ")";
+        }
+      else if (!dual_infeasible && model->isProvenOptimal())
         {
           const unsigned int n = lp.n_columns(), m = lp.n_rows();
           solution.status = Status::optimal;
@@ -737,6 +718,9 @@ namespace masonry
                                     model->dualRowSolution() + m);
           solution.objective = lp.objective_value(solution.x);
           solution.message   = "Clp: optimal";
+          if (!interior.x.empty())
+            solution.message += " (the barrier's point failed the check, " +
+                                interior.check.describe() + ": crossover)";
           if (basis_out)
             {
               basis_out->n_columns = n;

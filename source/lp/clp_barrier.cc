@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstring>
 #include <deque>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -407,8 +408,10 @@ namespace masonry
       }
     } // namespace
 
-    void
-    barrier_with_crossover(ClpSimplex &model)
+    bool
+    barrier_with_crossover(
+      ClpSimplex                                    &model,
+      const std::function<bool(const ClpSimplex &)> &accept)
     {
       // ClpSimplex::initialSolve(), ClpSolve::useBarrier, presolve off,
       // special options 0 (ClpSolve.cpp of Clp 1.17), with ReusedCholesky
@@ -425,11 +428,42 @@ namespace masonry
       cholesky->setIntegerParameter(0, 0);
       barrier.setCholesky(cholesky);
       barrier.scaling(0);
+      const double saveDualTolerance = model.dualTolerance();
+      if (accept)
+        // Clp's barrier stops when its primal and dual objectives differ
+        // by less than the dual tolerance (absolute: 1e-7, 1e-6 of a
+        // mechanism LP's scaled optimum); for an interior point that is
+        // kept, by less than this
+        barrier.setDualTolerance(1e-12);
       barrier.primalDual();
+      barrier.setDualTolerance(saveDualTolerance);
       const int    maxIts        = barrier.maximumBarrierIterations();
       const int    barrierStatus = barrier.status();
       const double gap           = barrier.complementarityGap();
       const int    numberFixed   = barrier.numberFixed();
+      if (accept)
+        {
+          // the barrier's point, before fixFixed() below moves the values
+          // within the primal tolerance of a bound onto it (the arrays are
+          // the model's, borrowed)
+          const bool kept  = barrierStatus == 0 && accept(model);
+          const int  first = barrier.numberIterations();
+          barrier.returnModel(model);
+          model.setPerturbation(savePerturbation);
+          model.scaling(saveScaling);
+          if (kept)
+            {
+              model.setNumberIterations(first);
+              return true;
+            }
+          // else the barrier with crossover as without @p accept (from
+          // the barrier's point of the tighter tolerance, the crossover
+          // ended at a vertex 2.8e-7 above the optimum on the barrel
+          // corner settlement)
+          barrier_with_crossover(model);
+          model.setNumberIterations(model.numberIterations() + first);
+          return false;
+        }
       // the bounds of columns then rows, saved and put back
       std::vector<double> saveLower, saveUpper;
       const auto save = [&](const double *columns, const double *rows) {
@@ -633,6 +667,7 @@ namespace masonry
         }
       model.setPerturbation(savePerturbation);
       model.scaling(saveScaling);
+      return false;
     }
   } // namespace lp
 } // namespace masonry

@@ -9,6 +9,8 @@
 #ifndef masonry_lp_clp_barrier_h
 #define masonry_lp_clp_barrier_h
 
+#include <functional>
+
 class ClpSimplex;
 
 namespace masonry
@@ -29,9 +31,22 @@ namespace masonry
      * values pass, run when the barrier's complementarity gap is exactly 0,
      * is left out (it had not ended after 13 CPU minutes on a 24 x 32 Bothwell
      * LP that the primal passes finish in about 46 s).
+     *
+     * If @p accept is given, the barrier runs with a dual tolerance of 1e-12
+     * (Clp stops when its primal and dual objectives differ by less than
+     * the dual tolerance); if it ends optimal (by Clp's criteria) @p accept
+     * is called with @p model holding the barrier's interior
+     * point (unscaled primal values, row duals and reduced costs); if it
+     * returns true the crossover is skipped and this function returns true
+     * (@p model then has no basis and no optimal status). Otherwise the
+     * barrier runs again as without @p accept, followed by the crossover
+     * (the same result as without @p accept), and this function returns
+     * false.
      */
-    void
-    barrier_with_crossover(ClpSimplex &model);
+    bool
+    barrier_with_crossover(
+      ClpSimplex                                    &model,
+      const std::function<bool(const ClpSimplex &)> &accept = nullptr);
   } // namespace lp
 } // namespace masonry
 

@@ -1,0 +1,121 @@
+/**
+ * `Crossover = never` (subsection LP solver/Clp): Clp's barrier stops at its
+ * interior point, mapped back from the explicit dual LP (`automatic`) or
+ * taken as it is (`barrier`), when that point checks out on the LP.
+ *
+ * - A semicircular arch (mean radius 5 m, thickness 1 m, 16 blocks per half,
+ *   Mohr-Coulomb joints with cohesion, tension cut-off and compression cap)
+ *   under a settlement of one springing, and its limit load under a
+ *   horizontal acceleration: with `never` the run reports that it kept the
+ *   interior point (lp_message), and its optimum equals the vertex of
+ *   `Crossover = always` (an independent solve: barrier, crossover and the
+ *   simplex's clean-up) to 1e-8 relative, for `automatic` and for
+ *   `barrier`.
+ * - The statuses stay the simplex's: the same arch at t/R = 0.06 without
+ *   settlement and cohesionless joints (well below the minimum thickness)
+ *   is a `mechanism`; two blocks with bonded supports, one settling, cannot
+ *   follow without slip at the crown, which cohesionless associative joints
+ *   allow only with opening: `incompatible`.
+ */
+#include <deal.II/base/mpi.h>
+
+#include "vault_tests.h"
+
+using namespace vault_tests;
+
+namespace
+{
+  const std::string mohr_coulomb =
+    "subsection Interface model\n  set Model = mohr coulomb\n"
+    "  subsection Mohr coulomb\n    set Friction coefficient = 0.6\n"
+    "    set Cohesion = 1e4\n    set Tensile strength = 5e3\n"
+    "    set Compressive strength = 3e5\n  end\nend\n";
+
+  const std::string cohesionless =
+    "subsection Interface model\n  set Model = mohr coulomb\n"
+    "  subsection Mohr coulomb\n    set Friction coefficient = 0.6\n"
+    "  end\nend\n";
+
+  std::string
+  solver(const std::string &algorithm, const std::string &crossover)
+  {
+    return "subsection LP solver\n  subsection Clp\n    set Algorithm = " +
+           algorithm + "\n    set Crossover = " + crossover + "\n  end\nend\n";
+  }
+
+  std::string
+  limit_load_prm()
+  {
+    return "set Analysis = limit load\n"
+           "subsection Geometry model\n  set Model name = arch\n"
+           "  set Thickness = 1\n  set Density = 2000\n"
+           "  subsection Arch\n    set Span = 10\n    set Rise = 5\n"
+           "    set Depth = 1\n  end\nend\n"
+           "subsection Limit load\n  set Blocks along u = 16\n"
+           "  set Blocks along v = 1\n  set Stations per edge = 2\n"
+           "  set Supported edges = springing left, springing right\n"
+           "  set Live acceleration = 1; 0; 0\n"
+           "  set Write picture = false\nend\n" +
+           mohr_coulomb;
+  }
+
+  bool
+  kept_interior(const masonry::Json &s)
+  {
+    return s.at("lp_message").as_string().find("no crossover") !=
+           std::string::npos;
+  }
+
+  void
+  compare(const std::string &name,
+          const std::string &file,
+          const std::string &prm,
+          const std::string &key)
+  {
+    for (const std::string a : {"automatic", "barrier"})
+      {
+        const std::string   f = file + "_" + a;
+        const masonry::Json vertex =
+          run(f + "_always", prm + solver(a, "always"));
+        const masonry::Json interior =
+          run(f + "_never", prm + solver(a, "never"));
+        const bool optimal = vertex.at("status").as_string() == "optimal" &&
+                             interior.at("status").as_string() == "optimal";
+        check(optimal && kept_interior(interior) && !kept_interior(vertex),
+              name + ", " + a + ": `never' keeps the interior point");
+        const double error = optimal ? relative(interior.at(key).as_number(),
+                                                vertex.at(key).as_number()) :
+                                       1.;
+        if (!(error <= 1e-8))
+          std::cout << "  relative difference " << error << "\n";
+        check(error <= 1e-8,
+              name + ", " + a + ": the same optimum as the vertex (1e-8)");
+      }
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  compare("settlement",
+          "settlement",
+          arch_prm(5, 1, 16, "0; 0; -0.01") + mohr_coulomb,
+          "objective");
+  compare("limit load", "limit", limit_load_prm(), "load_multiplier");
+
+  for (const std::string c : {"always", "never"})
+    {
+      const masonry::Json thin = run("thin_" + c,
+                                     arch_prm(5, 0.3, 16, "0; 0; 0") +
+                                       cohesionless + solver("automatic", c));
+      check(thin.at("status").as_string() == "mechanism",
+            "t/R = 0.06, cohesionless, Crossover = " + c + ": mechanism");
+      const masonry::Json bonded =
+        run("bonded_" + c,
+            arch_prm(5, 1, 1, "0; 0; -0.01", "bonded") + cohesionless +
+              solver("automatic", c));
+      check(bonded.at("status").as_string() == "incompatible",
+            "two blocks, bonded supports, Crossover = " + c + ": incompatible");
+    }
+}
