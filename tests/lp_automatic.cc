@@ -20,27 +20,7 @@ using namespace vault_tests;
 
 namespace
 {
-  const std::string mohr_coulomb =
-    "subsection Interface model\n  set Model = mohr coulomb\n"
-    "  subsection Mohr coulomb\n    set Friction coefficient = 0.6\n"
-    "    set Cohesion = 1e4\n    set Tensile strength = 5e3\n"
-    "    set Compressive strength = 3e5\n  end\nend\n";
-
-  std::string
-  limit_load_prm()
-  {
-    return "set Analysis = limit load\n"
-           "subsection Geometry model\n  set Model name = arch\n"
-           "  set Thickness = 1\n  set Density = 2000\n"
-           "  subsection Arch\n    set Span = 10\n    set Rise = 5\n"
-           "    set Depth = 1\n  end\nend\n"
-           "subsection Limit load\n  set Blocks along u = 16\n"
-           "  set Blocks along v = 1\n  set Stations per edge = 2\n"
-           "  set Supported edges = springing left, springing right\n"
-           "  set Live acceleration = 1; 0; 0\n"
-           "  set Write picture = false\nend\n" +
-           mohr_coulomb;
-  }
+  const std::string mohr_coulomb = mohr_coulomb_joints();
 
   std::string
   algorithm(const std::string &a)
@@ -102,7 +82,7 @@ main(int argc, char **argv)
           true);
   compare("limit load, Mohr-Coulomb",
           "limit",
-          limit_load_prm(),
+          arch_limit_load_prm(),
           "load_multiplier",
           false);
 }

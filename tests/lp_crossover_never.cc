@@ -25,11 +25,7 @@ using namespace vault_tests;
 
 namespace
 {
-  const std::string mohr_coulomb =
-    "subsection Interface model\n  set Model = mohr coulomb\n"
-    "  subsection Mohr coulomb\n    set Friction coefficient = 0.6\n"
-    "    set Cohesion = 1e4\n    set Tensile strength = 5e3\n"
-    "    set Compressive strength = 3e5\n  end\nend\n";
+  const std::string mohr_coulomb = mohr_coulomb_joints();
 
   const std::string cohesionless =
     "subsection Interface model\n  set Model = mohr coulomb\n"
@@ -41,22 +37,6 @@ namespace
   {
     return "subsection LP solver\n  subsection Clp\n    set Algorithm = " +
            algorithm + "\n    set Crossover = " + crossover + "\n  end\nend\n";
-  }
-
-  std::string
-  limit_load_prm()
-  {
-    return "set Analysis = limit load\n"
-           "subsection Geometry model\n  set Model name = arch\n"
-           "  set Thickness = 1\n  set Density = 2000\n"
-           "  subsection Arch\n    set Span = 10\n    set Rise = 5\n"
-           "    set Depth = 1\n  end\nend\n"
-           "subsection Limit load\n  set Blocks along u = 16\n"
-           "  set Blocks along v = 1\n  set Stations per edge = 2\n"
-           "  set Supported edges = springing left, springing right\n"
-           "  set Live acceleration = 1; 0; 0\n"
-           "  set Write picture = false\nend\n" +
-           mohr_coulomb;
   }
 
   bool
@@ -102,7 +82,7 @@ main(int argc, char **argv)
           "settlement",
           arch_prm(5, 1, 16, "0; 0; -0.01") + mohr_coulomb,
           "objective");
-  compare("limit load", "limit", limit_load_prm(), "load_multiplier");
+  compare("limit load", "limit", arch_limit_load_prm(), "load_multiplier");
 
   for (const std::string c : {"always", "never"})
     {

@@ -126,6 +126,35 @@ namespace vault_tests
     return s.str();
   }
 
+  /** Mohr-Coulomb joints of the LP tests (friction 0.6, cohesion 10 kPa,
+   * tension cut-off 5 kPa, compression cap 0.3 MPa). */
+  inline std::string
+  mohr_coulomb_joints()
+  {
+    return "subsection Interface model\n  set Model = mohr coulomb\n"
+           "  subsection Mohr coulomb\n    set Friction coefficient = 0.6\n"
+           "    set Cohesion = 1e4\n    set Tensile strength = 5e3\n"
+           "    set Compressive strength = 3e5\n  end\nend\n";
+  }
+
+  /** The limit load of an arch (span 10 m, rise 5 m, thickness 1 m, 16
+   * blocks) under a horizontal acceleration, mohr_coulomb_joints(). */
+  inline std::string
+  arch_limit_load_prm()
+  {
+    return "set Analysis = limit load\n"
+           "subsection Geometry model\n  set Model name = arch\n"
+           "  set Thickness = 1\n  set Density = 2000\n"
+           "  subsection Arch\n    set Span = 10\n    set Rise = 5\n"
+           "    set Depth = 1\n  end\nend\n"
+           "subsection Limit load\n  set Blocks along u = 16\n"
+           "  set Blocks along v = 1\n  set Stations per edge = 2\n"
+           "  set Supported edges = springing left, springing right\n"
+           "  set Live acceleration = 1; 0; 0\n"
+           "  set Write picture = false\nend\n" +
+           mohr_coulomb_joints();
+  }
+
   /**
    * The five-hinge mechanism of a semicircular arch (R = 1; hinges at the
    * crown extrados, the haunch intrados at β from the crown and the
