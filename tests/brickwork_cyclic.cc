@@ -15,11 +15,13 @@
  *    the threshold, at most the cap per step, and the run goes on to the
  *    end with zero force once all are gone;
  *  - a run stopped after some steps and resumed from its checkpoint gives
- *    the curve of the uninterrupted run (1e-12).
+ *    the curve of the uninterrupted run (1e-12); resumed with another
+ *    `List of postprocessors', it stops with a one-line error.
  */
 #include <iomanip>
 
 #include "brickwork_tests.h"
+#include "tests.h"
 
 using namespace brickwork_tests;
 
@@ -281,6 +283,22 @@ namespace
     check(resumed.at("status").as_string() == "completed" && diff < 1e-12,
           "resume: the resumed run reproduces the uninterrupted curve "
           "(1e-12)");
+
+    // a checkpoint holds the data of the run's postprocessors: a resumed
+    // run with another list stops with one line that names the entry
+    run("other_list", prm(short_hex + "set Maximum steps = 37\n", material()));
+    testing::write_file(
+      "other_list.prm",
+      "set Output directory = results/other_list\n" +
+        prm(short_hex + "set Resume = true\n", material()) +
+        "subsection Postprocess\nsubsection Wallette\n"
+        "set List of postprocessors = curve tables, failure plot\nend\nend\n");
+    const testing::Result other = testing::run({"other_list.prm"});
+    testing::check_error(other);
+    check(other.err.find("Resume") != std::string::npos &&
+            other.err.find("List of postprocessors") != std::string::npos,
+          "resume with another list of postprocessors: the error names "
+          "`Resume' and `List of postprocessors'");
   }
 
 } // namespace
