@@ -14,7 +14,6 @@
 #include <masonry/brickwork/interface_law.h>
 #include <masonry/brickwork/wallette.h>
 #include <masonry/core/output_directory.h>
-#include <masonry/core/parameters.h>
 
 #include <deal.II/base/multithread_info.h>
 #include <deal.II/distributed/shared_tria.h>
@@ -367,15 +366,7 @@ namespace masonry
         if (settings.checkpoint.resume)
           {
             auto parts = checkpoint_parts();
-            load_checkpoint(parts, context);
-            // a checkpoint holds the data of the postprocessors of the run
-            // that wrote it, in their order: another list cannot take them
-            const std::string other_list =
-              "the checkpoint was written by a run with another `List of "
-              "postprocessors' (subsection Postprocess/Wallette); resume "
-              "with the same list, in the same order";
-            AssertThrow(postprocessor_data.size() == postprocessors.size(),
-                        ExcParameter("Resume", other_list));
+            load_checkpoint(parts, context, postprocessors.size());
             for (unsigned int i = 0; i < postprocessors.size(); ++i)
               try
                 {
@@ -383,9 +374,7 @@ namespace masonry
                 }
               catch (const std::exception &e)
                 {
-                  AssertThrow(false,
-                              ExcParameter("Resume",
-                                           other_list + " (" + e.what() + ")"));
+                  AssertThrow(false, other_postprocessors(e.what()));
                 }
             pcout << "Resumed from the checkpoint at step " << progress.step
                   << " (platen displacement " << progress.applied << " m)\n";
