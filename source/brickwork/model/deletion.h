@@ -74,6 +74,26 @@ namespace masonry
                        const unsigned int                   c,
                        const unsigned int                   q);
 
+      /**
+       * No brick or mortar cell can take a strain of this (100 %: a cell
+       * twice its length or crushed flat): a solution with a remaining
+       * cell strained beyond it is a mechanism of the damaged structure
+       * (nearly free parts moved without bound), not a state of the
+       * wallette.
+       */
+      constexpr double mechanism_strain = 1;
+
+      /** The largest absolute principal value of the cell-averaged strain
+       * over the remaining cells at the displacement system.u (all
+       * ranks; updates system.ghosted). */
+      double
+      largest_cell_strain(System &system, const Specimen &specimen);
+
+      /** Empty if largest_cell_strain() is at most mechanism_strain, else
+       * the reason, one line. */
+      std::string
+      mechanism_problem(System &system, const Specimen &specimen);
+
       /** The DOFs in no remaining cell of @p specimen. */
       std::vector<dealii::types::global_dof_index>
       orphan_dofs(const System &system, const Specimen &specimen);
