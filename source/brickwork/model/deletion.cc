@@ -84,8 +84,8 @@ namespace masonry
           return "";
         std::ostringstream m;
         m << std::setprecision(3) << "a remaining cell strained by "
-          << strain * 100
-          << " % (over 100 %): the damaged wallette is a mechanism";
+          << strain * 100 << " % (over " << mechanism_strain * 100
+          << " %): the damaged wallette is a mechanism";
         return m.str();
       }
 
