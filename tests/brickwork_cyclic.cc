@@ -14,12 +14,17 @@
  *  - element deletion in that row: cells go only once their strain exceeds
  *    the threshold, at most the cap per step, and the run goes on to the
  *    end with zero force once all are gone;
+ *  - `Collapse stress ratio' 0.05 ends the row's run at the first step
+ *    past the strain where the closed-form envelope falls to 5 % of the
+ *    peak (status completed);
  *  - a run stopped after some steps and resumed from its checkpoint gives
- *    the curve of the uninterrupted run (1e-12).
+ *    the curve of the uninterrupted run (1e-12); resumed with another
+ *    `List of postprocessors', it stops with a one-line error.
  */
 #include <iomanip>
 
 #include "brickwork_tests.h"
+#include "tests.h"
 
 using namespace brickwork_tests;
 
@@ -260,6 +265,27 @@ namespace
                     d.at("deleted_cells").as_number() == 16 &&
                     rows.back()[4] == 0,
                   "deletion: all 16 cells gone, the run completes, force 0");
+            // `Collapse stress ratio' 0.05: the run ends at the first step
+            // whose stress is below 5 % of the peak, on the softening
+            // branch f_t exp(-(e - e0) / w) past e0 + w ln(f_t / (0.05
+            // peak))
+            const auto c =
+              run("collapse",
+                  prm(t.str() + "set Collapse stress ratio = 0.05\n",
+                      material(nu0)));
+            const auto   cr   = curve("collapse");
+            const double peak = c.at("peak_stress").as_number();
+            const double e_collapse =
+              f_t / E0 + w * std::log(f_t / (0.05 * peak));
+            const auto &last_row = cr.back(), &before = cr[cr.size() - 2];
+            check(c.at("status").as_string() == "completed" &&
+                    c.at("message").as_string().rfind("the specimen collapsed",
+                                                      0) == 0,
+                  "collapse: status completed, the message says so");
+            check(last_row[4] < 0.05 * peak && before[4] >= 0.05 * peak &&
+                    last_row[2] >= e_collapse && before[2] < e_collapse,
+                  "collapse: the run ends at the first step past the strain "
+                  "where the envelope falls to 5 % of the peak");
           }
       }
   }
@@ -281,6 +307,22 @@ namespace
     check(resumed.at("status").as_string() == "completed" && diff < 1e-12,
           "resume: the resumed run reproduces the uninterrupted curve "
           "(1e-12)");
+
+    // a checkpoint holds the data of the run's postprocessors: a resumed
+    // run with another list stops with one line that names the entry
+    run("other_list", prm(short_hex + "set Maximum steps = 37\n", material()));
+    testing::write_file(
+      "other_list.prm",
+      "set Output directory = results/other_list\n" +
+        prm(short_hex + "set Resume = true\n", material()) +
+        "subsection Postprocess\nsubsection Wallette\n"
+        "set List of postprocessors = curve tables, failure plot\nend\nend\n");
+    const testing::Result other = testing::run({"other_list.prm"});
+    testing::check_error(other);
+    check(other.err.find("Resume") != std::string::npos &&
+            other.err.find("List of postprocessors") != std::string::npos,
+          "resume with another list of postprocessors: the error names "
+          "`Resume' and `List of postprocessors'");
   }
 
 } // namespace

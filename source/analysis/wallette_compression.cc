@@ -363,6 +363,18 @@ namespace masonry
                           "is aimed at it; the leg ends at the first step "
                           "at or below 1.01 times it.");
         prm.declare_entry(
+          "Collapse stress ratio",
+          "0",
+          Double(0, 1),
+          "The run ends when the specimen has collapsed: on a loading leg "
+          "the stress has fallen below this fraction of the peak stress of "
+          "the run, and by more than that from the largest stress of the "
+          "leg (a reloading from the unloading stress is not a collapse), "
+          "dimensionless, in [0, 1). Its status is `completed', its message "
+          "(log.txt, summary.json) says where, and the last state is written; "
+          "the rest of the protocol is not run. 0: never (the run goes on "
+          "to the last amplitude whatever the specimen still carries).");
+        prm.declare_entry(
           "Platen speed",
           "1e-5",
           Double(0),
@@ -553,7 +565,11 @@ namespace masonry
           prm.get_integer("Cycles per amplitude");
         s.protocol.unloading_stress = prm.get_double("Unloading stress");
         s.protocol.platen_speed     = positive("Platen speed");
-        s.specimen.deletion_strain  = prm.get_double("Deletion strain");
+        s.protocol.collapse_ratio   = prm.get_double("Collapse stress ratio");
+        AssertThrow(s.protocol.collapse_ratio < 1,
+                    ExcParameter("Collapse stress ratio",
+                                 "must be below 1 (a fraction of the peak)"));
+        s.specimen.deletion_strain = prm.get_double("Deletion strain");
         s.specimen.deletion_fade_opening =
           prm.get_double("Deletion fade opening");
         s.specimen.deletion_crushing_length =

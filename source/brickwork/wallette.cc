@@ -366,9 +366,16 @@ namespace masonry
         if (settings.checkpoint.resume)
           {
             auto parts = checkpoint_parts();
-            load_checkpoint(parts, context);
+            load_checkpoint(parts, context, postprocessors.size());
             for (unsigned int i = 0; i < postprocessors.size(); ++i)
-              postprocessors[i]->load(postprocessor_data[i]);
+              try
+                {
+                  postprocessors[i]->load(postprocessor_data[i]);
+                }
+              catch (const std::exception &e)
+                {
+                  AssertThrow(false, other_postprocessors(e.what()));
+                }
             pcout << "Resumed from the checkpoint at step " << progress.step
                   << " (platen displacement " << progress.applied << " m)\n";
             for (auto &pp : postprocessors)
@@ -481,17 +488,22 @@ namespace masonry
             unsigned int its      = 0;
             double       reaction = 0;
             std::string  failure;
-            const bool   ok = newton.solve_step(system,
-                                              *assembler,
-                                              *solver,
-                                              next,
-                                              time_step,
-                                              progress.largest_reaction,
-                                              its,
-                                              reaction,
-                                              non_finite,
-                                              failure);
+            bool         ok = newton.solve_step(system,
+                                        *assembler,
+                                        *solver,
+                                        next,
+                                        time_step,
+                                        progress.largest_reaction,
+                                        its,
+                                        reaction,
+                                        non_finite,
+                                        failure);
             statistics.total_newton += its;
+            // a converged mechanism is no state of the wallette: a
+            // smaller step, or the run stops (model/deletion.h)
+            if (ok)
+              failure = mechanism_problem(system, specimen);
+            ok = ok && failure.empty();
             if (!ok && correction.active())
               {
                 system.u = u_converged;
@@ -616,17 +628,25 @@ namespace masonry
                 pcout << "Stopped: " << message << "\n";
                 break;
               }
-            const std::string runaway = runaway_problem(curve.back().stress,
-                                                        curve.back().strain,
-                                                        bound[0],
-                                                        bound[1]);
-            if (!runaway.empty())
+            // a physical end (collapse, status completed) or none: a
+            // solution that ran away (model/bounds.h)
+            std::string end =
+              collapse_problem(curve, settings.protocol.collapse_ratio);
+            if (end.empty())
+              end = runaway_problem(curve.back().stress,
+                                    curve.back().strain,
+                                    bound[0],
+                                    bound[1]);
+            if (!end.empty())
               {
-                status  = "failed";
-                message = runaway + " (step " +
-                          Utilities::to_string(progress.step) +
+                message = end + " (step " + std::to_string(progress.step) +
                           "); results up to there are written";
                 pcout << "Stopped: " << message << "\n";
+                if (end.rfind("the specimen collapsed", 0) == 0)
+                  for (auto &pp : postprocessors)
+                    pp->output(*view, progress.step, curve.back().strain);
+                else
+                  status = "failed";
                 break;
               }
             small_steps = taken < stall_floor ? small_steps + 1 : 0;

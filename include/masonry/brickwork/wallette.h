@@ -129,6 +129,10 @@ namespace masonry
       /** Unloading of a cycle ends when the stress has dropped to this
        * (Pa, along the platen direction). */
       double unloading_stress = 0.1e6;
+      /** The run ends (status completed, with a message) once the specimen
+       * has collapsed: on a loading leg the stress has fallen below this
+       * fraction of the peak (model::collapse_problem()); 0: never. */
+      double collapse_ratio = 0;
       /** Platen speed (m/s): the pseudo-time of a step is its platen
        * displacement increment divided by this (viscous regularisation). */
       double platen_speed = 1e-5;

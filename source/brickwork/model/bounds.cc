@@ -56,6 +56,32 @@ namespace masonry
           << " MPa, which no wallette of these materials can carry";
         return m.str();
       }
+
+      std::string
+      collapse_problem(const std::vector<CurvePoint> &curve, const double ratio)
+      {
+        if (ratio <= 0 || curve.empty() || curve.back().unloading)
+          return "";
+        const CurvePoint &now  = curve.back();
+        double            peak = 0, leg = now.stress;
+        for (const auto &p : curve)
+          peak = std::max(peak, p.stress);
+        for (auto p = curve.rbegin();
+             p != curve.rend() && p->cycle == now.cycle && !p->unloading;
+             ++p)
+          leg = std::max(leg, p->stress);
+        const double floor = ratio * peak;
+        if (now.stress >= floor || leg - now.stress <= floor)
+          return "";
+        std::ostringstream m;
+        m << "the specimen collapsed: at strain " << now.strain
+          << " the platen stress fell to " << now.stress * 1e-6
+          << " MPa, below `Collapse stress ratio' = " << ratio
+          << " of the peak " << peak * 1e-6 << " MPa (" << leg * 1e-6
+          << " MPa earlier in this loading); the rest of the protocol is "
+             "not run";
+        return m.str();
+      }
     } // namespace model
   }   // namespace brickwork
 } // namespace masonry

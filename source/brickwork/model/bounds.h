@@ -1,13 +1,17 @@
 /**
  * @file
  * A physical bound on the platen stress of a wallette: past it the
- * solution has run away (a result that is finite but not a solution).
+ * solution has run away (a result that is finite but not a solution); and
+ * the end of a specimen that has collapsed.
  */
 #ifndef masonry_brickwork_model_bounds_h
 #define masonry_brickwork_model_bounds_h
 
+#include <masonry/brickwork/curve.h>
+
 #include <array>
 #include <string>
+#include <vector>
 
 namespace masonry
 {
@@ -56,6 +60,18 @@ namespace masonry
                       const double strain,
                       const double strength,
                       const double modulus);
+
+      /**
+       * Empty unless the specimen has collapsed at the last point of
+       * @p curve: on a loading leg, the platen stress has fallen below
+       * @p ratio times the largest stress of the run and by more than that
+       * from the largest stress of this leg (a reloading that starts near
+       * zero has not collapsed); then the reason, one line, naming the
+       * values. @p ratio = 0: never.
+       */
+      std::string
+      collapse_problem(const std::vector<CurvePoint> &curve,
+                       const double                   ratio);
     } // namespace model
   }   // namespace brickwork
 } // namespace masonry

@@ -77,8 +77,21 @@ namespace masonry
           std::to_string(Utilities::MPI::this_mpi_process(comm)));
       }
 
+      dealii::ExcMessage
+      other_postprocessors(const std::string &reason)
+      {
+        return ExcParameter("Resume",
+                            "the checkpoint was written by a run with "
+                            "another `List of postprocessors' (subsection "
+                            "Postprocess/Wallette); resume with the same "
+                            "list, in the same order" +
+                              (reason.empty() ? "" : " (" + reason + ")"));
+      }
+
       void
-      load_checkpoint(CheckpointParts &parts, RunContext &context)
+      load_checkpoint(CheckpointParts   &parts,
+                      RunContext        &context,
+                      const unsigned int n_postprocessors)
       {
         const MPI_Comm    comm = context.mpi_communicator;
         const std::string name = file_name(context);
@@ -105,6 +118,8 @@ namespace masonry
                                        " DOFs; resume with the same "
                                        "parameters and number of ranks"));
             serialize_parts(ar, parts);
+            AssertThrow(parts.postprocessors.size() == n_postprocessors,
+                        other_postprocessors(""));
             std::vector<std::pair<types::global_dof_index, double>> values;
             std::vector<double>                                     increments;
             std::string                                             status;

@@ -9,6 +9,7 @@
 #define masonry_brickwork_model_checkpoint_h
 
 #include <masonry/brickwork/curve.h>
+#include <masonry/core/parameters.h>
 #include <masonry/core/run_context.h>
 
 #include <string>
@@ -63,9 +64,17 @@ namespace masonry
                       RunContext            &context);
 
       /** Read this rank's checkpoint; throws naming `Resume' if there is
-       * none or it belongs to another run. */
+       * none, it belongs to another run or it holds the data of another
+       * number of postprocessors than @p n_postprocessors. */
       void
-      load_checkpoint(CheckpointParts &parts, RunContext &context);
+      load_checkpoint(CheckpointParts   &parts,
+                      RunContext        &context,
+                      const unsigned int n_postprocessors);
+
+      /** The error of a checkpoint whose postprocessor data the run's
+       * postprocessors cannot load (@p reason: why), naming `Resume'. */
+      dealii::ExcMessage
+      other_postprocessors(const std::string &reason);
     } // namespace model
   }   // namespace brickwork
 } // namespace masonry

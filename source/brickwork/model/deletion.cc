@@ -8,6 +8,8 @@
 #include "deletion.h"
 
 #include <algorithm>
+#include <iomanip>
+#include <sstream>
 
 #include "one_thread.h"
 
@@ -43,6 +45,48 @@ namespace masonry
           if (!used[i])
             orphans.push_back(i);
         return orphans;
+      }
+
+      double
+      largest_cell_strain(System &system, const Specimen &specimen)
+      {
+        system.ghosted = system.u;
+        FEValues<3>                        fe_values(system.fe,
+                              QGauss<3>(2),
+                              update_gradients | update_JxW_values);
+        std::vector<SymmetricTensor<2, 3>> eps(8);
+        double                             largest = 0;
+        for (const auto &cell : system.dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned() &&
+              !specimen.deleted[cell->active_cell_index()])
+            {
+              fe_values.reinit(cell);
+              fe_values[FEValuesExtractors::Vector(0)]
+                .get_function_symmetric_gradients(system.ghosted, eps);
+              SymmetricTensor<2, 3> mean;
+              double                volume = 0;
+              for (unsigned int q = 0; q < 8; ++q)
+                {
+                  mean += eps[q] * fe_values.JxW(q);
+                  volume += fe_values.JxW(q);
+                }
+              const auto e = eigenvalues(mean / volume);
+              largest = std::max({largest, std::abs(e[0]), std::abs(e[2])});
+            }
+        return Utilities::MPI::max(largest, system.comm);
+      }
+
+      std::string
+      mechanism_problem(System &system, const Specimen &specimen)
+      {
+        const double strain = largest_cell_strain(system, specimen);
+        if (strain <= mechanism_strain)
+          return "";
+        std::ostringstream m;
+        m << std::setprecision(3) << "a remaining cell strained by "
+          << strain * 100 << " % (over " << mechanism_strain * 100
+          << " %): the damaged wallette is a mechanism";
+        return m.str();
       }
 
       SymmetricTensor<2, 3>

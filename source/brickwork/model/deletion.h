@@ -74,6 +74,29 @@ namespace masonry
                        const unsigned int                   c,
                        const unsigned int                   q);
 
+      /**
+       * No brick or mortar cell of a small-strain model means anything at
+       * a strain of this (1000 %: a cell eleven times its length): a
+       * solution with a remaining cell strained beyond it is a mechanism
+       * of the damaged structure (nearly free parts moved without bound),
+       * not a state of the wallette. Not 100 %: the squeezed mortar of a
+       * weak joint flows steadily to 100 % at a nominal strain of 0.015
+       * (tests/brickwork_detailed_band), while the runaway of the double
+       * cyclic example grows by 15-25 % a step (doc/brickwork.md).
+       */
+      constexpr double mechanism_strain = 10;
+
+      /** The largest absolute principal value of the cell-averaged strain
+       * over the remaining cells at the displacement system.u (all
+       * ranks; updates system.ghosted). */
+      double
+      largest_cell_strain(System &system, const Specimen &specimen);
+
+      /** Empty if largest_cell_strain() is at most mechanism_strain, else
+       * the reason, one line. */
+      std::string
+      mechanism_problem(System &system, const Specimen &specimen);
+
       /** The DOFs in no remaining cell of @p specimen. */
       std::vector<dealii::types::global_dof_index>
       orphan_dofs(const System &system, const Specimen &specimen);
