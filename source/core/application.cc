@@ -622,7 +622,8 @@ masonry_main(int argc, char **argv)
  * libraries deal.II initialises with it: PETSc, SLEPc, p4est, Zoltan) and
  * the Open MPI daemon a singleton starts were a third of the CPU time of
  * such a call (contrib/benchmarks/startup). Any other command goes to
- * masonry_main().
+ * masonry_main(). The output is flushed before the return: the launcher
+ * ends the process without the libraries' static destructors.
  */
 extern "C" int
 masonry_validate(int argc, char **argv)
@@ -633,7 +634,11 @@ masonry_validate(int argc, char **argv)
       arguments.emplace_back(argv[i]);
   if (arguments.empty() || arguments[0] != "--validate")
     return masonry_main(argc, argv);
-  return masonry::run_application(std::vector<std::string>(argv + 1,
-                                                           argv + argc),
-                                  MPI_COMM_SELF);
+  const int status =
+    masonry::run_application(std::vector<std::string>(argv + 1, argv + argc),
+                             MPI_COMM_SELF);
+  // the launcher ends the process with _Exit() after this call
+  std::cout.flush();
+  std::cerr.flush();
+  return status;
 }
