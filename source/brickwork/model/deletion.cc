@@ -83,8 +83,9 @@ namespace masonry
         if (strain <= mechanism_strain)
           return "";
         std::ostringstream m;
-        m << std::setprecision(3) << "a remaining cell strained by "
-          << strain * 100 << " % (over " << mechanism_strain * 100
+        m << std::fixed << std::setprecision(0)
+          << "a remaining cell strained by " << strain * 100 << " % (over "
+          << mechanism_strain * 100
           << " %): the damaged wallette is a mechanism";
         return m.str();
       }
