@@ -630,19 +630,20 @@ namespace masonry
               }
             // a physical end (collapse, status completed) or none: a
             // solution that ran away (model/bounds.h)
-            std::string end =
+            const std::string collapse =
               collapse_problem(curve, settings.protocol.collapse_ratio);
-            if (end.empty())
-              end = runaway_problem(curve.back().stress,
-                                    curve.back().strain,
-                                    bound[0],
-                                    bound[1]);
+            const std::string end = !collapse.empty() ?
+                                      collapse :
+                                      runaway_problem(curve.back().stress,
+                                                      curve.back().strain,
+                                                      bound[0],
+                                                      bound[1]);
             if (!end.empty())
               {
                 message = end + " (step " + std::to_string(progress.step) +
                           "); results up to there are written";
                 pcout << "Stopped: " << message << "\n";
-                if (end.rfind("the specimen collapsed", 0) == 0)
+                if (!collapse.empty())
                   for (auto &pp : postprocessors)
                     pp->output(*view, progress.step, curve.back().strain);
                 else

@@ -47,6 +47,31 @@ namespace masonry
         return orphans;
       }
 
+      namespace
+      {
+        /** The volume average of the strain over @p cell at the
+         * displacement @p ghosted (@p fe_values: 2 x 2 x 2 Gauss points,
+         * gradients and JxW; @p eps: scratch). */
+        SymmetricTensor<2, 3>
+        mean_strain(const DoFHandler<3>::active_cell_iterator &cell,
+                    const System::Vector                      &ghosted,
+                    FEValues<3>                               &fe_values,
+                    std::vector<SymmetricTensor<2, 3>>        &eps)
+        {
+          fe_values.reinit(cell);
+          fe_values[FEValuesExtractors::Vector(0)]
+            .get_function_symmetric_gradients(ghosted, eps);
+          SymmetricTensor<2, 3> mean;
+          double                volume = 0;
+          for (unsigned int q = 0; q < eps.size(); ++q)
+            {
+              mean += eps[q] * fe_values.JxW(q);
+              volume += fe_values.JxW(q);
+            }
+          return mean / volume;
+        }
+      } // namespace
+
       double
       largest_cell_strain(System &system, const Specimen &specimen)
       {
@@ -60,17 +85,8 @@ namespace masonry
           if (cell->is_locally_owned() &&
               !specimen.deleted[cell->active_cell_index()])
             {
-              fe_values.reinit(cell);
-              fe_values[FEValuesExtractors::Vector(0)]
-                .get_function_symmetric_gradients(system.ghosted, eps);
-              SymmetricTensor<2, 3> mean;
-              double                volume = 0;
-              for (unsigned int q = 0; q < 8; ++q)
-                {
-                  mean += eps[q] * fe_values.JxW(q);
-                  volume += fe_values.JxW(q);
-                }
-              const auto e = eigenvalues(mean / volume);
+              const auto e =
+                eigenvalues(mean_strain(cell, system.ghosted, fe_values, eps));
               largest = std::max({largest, std::abs(e[0]), std::abs(e[2])});
             }
         return Utilities::MPI::max(largest, system.comm);
@@ -172,25 +188,14 @@ namespace masonry
                                   quadrature,
                                   update_gradients | update_JxW_values);
         std::vector<SymmetricTensor<2, 3>>           eps(8);
-        const FEValuesExtractors::Vector             displacement(0);
         std::vector<std::pair<double, unsigned int>> candidates, fades, splits,
           shortenings;
         for (const auto &cell : system.dof_handler.active_cell_iterators())
           if (cell->is_locally_owned() &&
               !specimen.deleted[cell->active_cell_index()])
             {
-              fe_values.reinit(cell);
-              fe_values[displacement].get_function_symmetric_gradients(
-                system.ghosted, eps);
-              SymmetricTensor<2, 3> mean;
-              double                volume = 0;
-              for (unsigned int q = 0; q < 8; ++q)
-                {
-                  mean += eps[q] * fe_values.JxW(q);
-                  volume += fe_values.JxW(q);
-                }
-              mean /= volume;
-              const auto         e  = eigenvalues(mean);
+              const auto e =
+                eigenvalues(mean_strain(cell, system.ghosted, fe_values, eps));
               const double       e1 = e[0];
               const unsigned int c  = cell->active_cell_index();
               if (crushing > 0 && -e[2] > specimen.max_shortening[c])
