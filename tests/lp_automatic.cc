@@ -98,7 +98,7 @@ main(int argc, char **argv)
           "load_multiplier",
           false);
   // the no-tension route from a basis of the dual LP's free columns (the
-  // tangential forces), taken from 1000 rows of the dual LP (LP columns) up:
+  // tangential forces), taken from 2000 rows of the dual LP (LP columns) up:
   // 16 x 12 blocks per half, a settlement varying along the depth, 2304
   // columns (the barrier, slow on these LPs, left out)
   std::string barrel = arch_prm(5, 1, 16, "0; 0; -0.01*y");
