@@ -271,8 +271,9 @@ namespace masonry
         "static problem in the contact forces) without presolve, by the "
         "barrier when the LP has at least as many columns as rows "
         "(Mohr-Coulomb joints: the plastic multipliers), else (no tension "
-        "no sliding) by the primal simplex without scaling, maps the "
-        "vertex back and "
+        "no sliding) by the primal simplex without scaling (from 2000 rows "
+        "of the dual LP up, from a basis of its free columns, the "
+        "tangential forces), maps the vertex back and "
         "confirms it with the dual simplex (the primal simplex if the "
         "mapped basis is not dual feasible; both without scaling, after a "
         "pass of the primal simplex on the unscaled dual LP, when the "
@@ -452,6 +453,19 @@ namespace masonry
               iterations += solved.numberIterations();
               if (kept)
                 return DualRoute::interior;
+            }
+          else if (method == "primal simplex" && solved.numberRows() >= 2000)
+            {
+              // from a basis of the free columns (tangential contact
+              // forces; Clp replaces dependent ones by slacks when it
+              // factorises): half the pivots of Clp's start, whole runs
+              // x0.80-0.92 CPU from 12 x 16 Bothwell blocks per half (2304
+              // rows) up; no gain at 9 x 12 (1296 rows) and 6 x 8, where
+              // the LPs of the examples are
+              // (contrib/benchmarks/lp_solvers/results-2026-11-28b.md)
+              free_columns_basic(solved);
+              solved.primal(0);
+              iterations += solved.numberIterations();
             }
           else
             {

@@ -270,5 +270,35 @@ namespace masonry
       c.primal_objective = lp.objective_value(x);
       return c;
     }
+
+    /**
+     * A starting basis for @p model: its free columns basic, every
+     * other column and every row slack at a finite bound (at the lower
+     * one if it has one). Usually singular or short of basic variables;
+     * Clp completes it with slacks when it factorises it.
+     */
+    void
+    free_columns_basic(ClpSimplex &model)
+    {
+      const auto at_bound = [](const double lower, const double upper) {
+        if (lower == upper)
+          return ClpSimplex::isFixed;
+        if (lower > -1e30)
+          return ClpSimplex::atLowerBound;
+        if (upper < 1e30)
+          return ClpSimplex::atUpperBound;
+        return ClpSimplex::basic;
+      };
+      for (int j = 0; j < model.numberColumns(); ++j)
+        model.setColumnStatus(j,
+                              at_bound(model.columnLower()[j],
+                                       model.columnUpper()[j]));
+      for (int i = 0; i < model.numberRows(); ++i)
+        {
+          const auto s = at_bound(model.rowLower()[i], model.rowUpper()[i]);
+          // a free row's slack stays basic, as in Clp's slack basis
+          model.setRowStatus(i, s);
+        }
+    }
   } // namespace lp
 } // namespace masonry

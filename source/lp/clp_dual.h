@@ -119,6 +119,15 @@ namespace masonry
     check_pair(const LinearProgram       &lp,
                const std::vector<double> &x,
                const std::vector<double> &y);
+
+    /**
+     * A starting basis for @p model: its free columns basic, every other
+     * column and every row slack at a finite bound (at the lower one if it
+     * has one). Usually singular or short of basic variables; Clp
+     * completes it with slacks when it factorises it.
+     */
+    void
+    free_columns_basic(ClpSimplex &model);
   } // namespace lp
 } // namespace masonry
 
