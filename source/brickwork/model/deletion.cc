@@ -49,14 +49,16 @@ namespace masonry
 
       namespace
       {
-        /** The volume average of the strain over @p cell at the
-         * displacement @p ghosted (@p fe_values: 2 x 2 x 2 Gauss points,
-         * gradients and JxW; @p eps: scratch). */
+        /** The volume average over @p cell of @p f(q, strain at q) at the
+         * displacement @p ghosted (@p fe_values: gradients and JxW; @p eps:
+         * scratch, one per quadrature point). */
+        template <class Function>
         SymmetricTensor<2, 3>
-        mean_strain(const DoFHandler<3>::active_cell_iterator &cell,
-                    const System::Vector                      &ghosted,
-                    FEValues<3>                               &fe_values,
-                    std::vector<SymmetricTensor<2, 3>>        &eps)
+        cell_average(const DoFHandler<3>::active_cell_iterator &cell,
+                     const System::Vector                      &ghosted,
+                     FEValues<3>                               &fe_values,
+                     std::vector<SymmetricTensor<2, 3>>        &eps,
+                     const Function                            &f)
         {
           fe_values.reinit(cell);
           fe_values[FEValuesExtractors::Vector(0)]
@@ -65,10 +67,26 @@ namespace masonry
           double                volume = 0;
           for (unsigned int q = 0; q < eps.size(); ++q)
             {
-              mean += eps[q] * fe_values.JxW(q);
+              mean += f(q, eps[q]) * fe_values.JxW(q);
               volume += fe_values.JxW(q);
             }
           return mean / volume;
+        }
+
+        /** The volume average of the strain over @p cell (cell_average()). */
+        SymmetricTensor<2, 3>
+        mean_strain(const DoFHandler<3>::active_cell_iterator &cell,
+                    const System::Vector                      &ghosted,
+                    FEValues<3>                               &fe_values,
+                    std::vector<SymmetricTensor<2, 3>>        &eps)
+        {
+          return cell_average(cell,
+                              ghosted,
+                              fe_values,
+                              eps,
+                              [](unsigned int, const SymmetricTensor<2, 3> &e) {
+                                return e;
+                              });
         }
       } // namespace
 
@@ -148,18 +166,15 @@ namespace masonry
       {
         const unsigned int                 c = cell->active_cell_index();
         std::vector<SymmetricTensor<2, 3>> eps(fe_values.n_quadrature_points);
-        fe_values.reinit(cell);
-        fe_values[FEValuesExtractors::Vector(0)]
-          .get_function_symmetric_gradients(ghosted, eps);
-        SymmetricTensor<2, 3> mean;
-        double                volume = 0;
-        for (unsigned int q = 0; q < eps.size(); ++q)
-          {
-            mean += converged_stress(material, eps[q], bricks, specimen, c, q) *
-                    fe_values.JxW(q);
-            volume += fe_values.JxW(q);
-          }
-        return specimen.fade[c] * mean / volume;
+        return specimen.fade[c] *
+               cell_average(
+                 cell,
+                 ghosted,
+                 fe_values,
+                 eps,
+                 [&](const unsigned int q, const SymmetricTensor<2, 3> &e) {
+                   return converged_stress(material, e, bricks, specimen, c, q);
+                 });
       }
 
       unsigned int
