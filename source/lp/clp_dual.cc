@@ -271,12 +271,6 @@ namespace masonry
       return c;
     }
 
-    /**
-     * A starting basis for @p model: its free columns basic, every
-     * other column and every row slack at a finite bound (at the lower
-     * one if it has one). Usually singular or short of basic variables;
-     * Clp completes it with slacks when it factorises it.
-     */
     void
     free_columns_basic(ClpSimplex &model)
     {
