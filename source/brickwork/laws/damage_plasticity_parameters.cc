@@ -191,22 +191,19 @@ namespace masonry
         "uniaxial stress.");
       prm.declare_entry(
         "IMPL-EX crack opening",
-        "extrapolated",
+        "frozen",
         dealii::Patterns::Selection("extrapolated|frozen"),
         "With `Damage integration = implex': how the tensile plastic strain "
-        "(the cracks' opening) enters a step. `extrapolated': like all of "
-        "the plastic strain, extrapolated from the last two steps. "
-        "`frozen': kept at its last converged value within the step (6 "
-        "more state values per point); the compressive flow is still "
-        "extrapolated. Once a crack is at `Maximum damage' its opening is "
-        "set by the neighbours, and its extrapolation acts as an imposed "
-        "strain that the next update takes up as opening again: a loop "
-        "that grows by 8-31 % a step whatever the step length and can end "
-        "a cyclic run in a spurious collapse (doc/brickwork.md, "
-        "Stabilisation). `frozen' removes the loop; in the collapse of "
-        "walls with frictionless debonded joints Newton then needs more "
-        "iterations and cut-backs, which is why it is not the default "
-        "yet.");
+        "(the cracks' opening) enters a step. `frozen': kept at its last "
+        "converged value within the step (6 more state values per point); "
+        "the compressive flow is still extrapolated. `extrapolated': like "
+        "all of the plastic strain, extrapolated from the last two steps "
+        "(before 2026-11-28 the only choice). Once a crack is at `Maximum "
+        "damage' its opening is set by the neighbours, and its "
+        "extrapolation acts as an imposed strain that the next update "
+        "takes up as opening again: a loop that grows by 8-31 % a step "
+        "whatever the step length and ended the double cyclic example in "
+        "a spurious collapse (doc/brickwork.md, Stabilisation).");
       prm.declare_entry(
         "Tension-compression interaction",
         "false",
