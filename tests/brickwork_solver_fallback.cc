@@ -6,9 +6,10 @@
  * Past the peak GMRES-AMG stops with AztecOO's `loss of precision' (before
  * the fallback this run ended `not converged'); that solve and all later
  * ones are done by MUMPS. Checked against an independent run with the direct
- * solver throughout: the same curve to 1e-6 of the peak stress (both converge
- * to the Newton tolerance) and the same deleted cells, up to a step that one
- * run cuts back and the other does not (see below).
+ * solver throughout: the same curve to 1e-3 of the peak stress (both converge
+ * to the Newton tolerance; the step control amplifies GMRES's 1e-10, see
+ * below) and the same deleted cells, up to a step that one run cuts back and
+ * the other does not.
  *
  * The same direct run checks the IMPL-EX step floor: where joints snap the
  * damage error stays above the tolerance for any step, and the step
@@ -50,7 +51,16 @@ main(int argc, char **argv)
         "gmres amg: some solves fell back to MUMPS");
   check(direct.at("deleted_cells").as_number() > 0,
         "direct: cells were deleted");
-  // The two runs take the same steps until one of them cuts a step back.
+  // The two runs take the same steps until one of them cuts a step back, up
+  // to what GMRES's tolerance (1e-10) lets through: the damage errors that
+  // set the IMPL-EX step lengths differ by as much, and the control
+  // amplifies it past the peak (with `IMPL-EX crack opening' = frozen: the
+  // step ends 2e-12 m apart at step 228, 1.4e-7 m at most by the end, the
+  // stresses of the same step 9e-5 of the peak apart at most; both runs
+  // 424 steps with the same cut-backs and deletions). So a row of one run
+  // is the same step of the other while their ends are within 1e-3 of the
+  // nominal step and both are on the same leg with the same deleted cells,
+  // and their stresses must agree to 1e-3 of the peak.
   // Newton can stall just above its tolerance (a residual of 1e-6 of the
   // reaction) in a step where a cell is deleted, and whether it does
   // depends on the last bits of the iterates, so on the BLAS kernels of
@@ -61,17 +71,16 @@ main(int argc, char **argv)
   // zeros left out of the sparsity changed MUMPS's pivot order, and the
   // direct run then stalled in step 256, two steps before the fallback).
   const auto   a = curve("gmres"), b = curve("direct");
-  const double peak   = direct.at("peak_stress").as_number();
-  unsigned int common = 0;
-  double       diff   = 0;
-  bool         same   = true;
+  const double peak    = direct.at("peak_stress").as_number();
+  const double nominal = 0.008 * direct.at("height").as_number() / 40;
+  unsigned int common  = 0;
+  double       diff    = 0;
   for (; common < std::min(a.size(), b.size()) &&
-         std::abs(a[common][1] - b[common][1]) <= 1e-12;
+         std::abs(a[common][1] - b[common][1]) <= 1e-3 * nominal &&
+         a[common][8] == b[common][8] && a[common][9] == b[common][9] &&
+         a[common][10] == b[common][10];
        ++common)
-    {
-      diff = std::max(diff, std::abs(a[common][4] - b[common][4]) / peak);
-      same = same && a[common][10] == b[common][10];
-    }
+    diff = std::max(diff, std::abs(a[common][4] - b[common][4]) / peak);
   const bool cut_back = gmres.at("cut_backs").as_number() > 0 ||
                         direct.at("cut_backs").as_number() > 0;
   const bool whole = common == a.size() && common == b.size();
@@ -89,9 +98,8 @@ main(int argc, char **argv)
   const bool to_cut_back   = fallback > 0 && first_cut > 0 &&
                            first_cut <= fallback + 3 &&
                            int(common) >= first_cut;
-  check(same && diff < 1e-6 &&
-          (whole || (cut_back && (past_fallback || to_cut_back))),
-        "the same curve as the direct solver (1e-6 of the peak) and the same "
+  check(diff < 1e-3 && (whole || (cut_back && (past_fallback || to_cut_back))),
+        "the same curve as the direct solver (1e-3 of the peak) and the same "
         "deleted cells, to past the fallback or to a cut-back before it");
 
   // the IMPL-EX step floor (columns: 1 displacement, 8 cycle, 9 unloading);

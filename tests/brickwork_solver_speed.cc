@@ -17,21 +17,25 @@
  * Every run converges each step to the Newton tolerance (1e-8 of the
  * reactions), so the results may differ by no more than what that lets
  * through: the cycle peaks up to the peak agree to 1e-6 of the peak stress.
- * After the collapse (cells deleted, the reaction near zero) the path is
- * sensitive to such differences (the IMPL-EX step control decides on
- * damage errors that differ in the last digits): the later cycle peaks
- * agree to 1 % of the peak. The reuse changes only the linear solves,
- * which GMRES does to 1e-10: with it the cycle peaks up to the peak are
- * those of the direct solves to 1e-6, and the later ones, where the same
- * sensitivity amplifies the 1e-10, to 0.1 % (9e-5 in the third cycle
- * with MUMPS's QAMD ordering, below 1e-6 with AMF before the unloading
- * legs ended within 1 % of the unloading stress: chance of the last
- * digits).
+ * Past the peak the path is sensitive to such differences (the IMPL-EX
+ * step control decides on damage errors that differ in the last digits).
+ * The wall collapses in the third cycle (its peak there, on the reloading
+ * before the collapse, is 0.43 of the peak): the peak of that cycle agrees
+ * to 2 % of the peak (measured with `IMPL-EX crack opening' = frozen: 0.4
+ * % chord corrections against none, 1.2 % predictor against none; with
+ * the cracks' opening extrapolated the wall collapsed in the second
+ * cycle's unloading and these agreed to 1 %). After the collapse every run
+ * carries less than 0.1 of the peak in the fourth cycle (measured 0.019 to
+ * 0.045 of it: what remains depends on which cells went first). The reuse
+ * changes only the linear solves, which GMRES does to 1e-10: with it the
+ * cycle peaks up to the peak are those of the direct solves to 1e-6, and
+ * the third one, where the same sensitivity amplifies the 1e-10, to 0.1 %
+ * (measured 6e-6).
  * The chord corrections (the default `Newton chord contraction' 0.1) solve
  * near the solution with the factorisation of the last tangent; they change
  * the iterates, not the equations, and the steps converge to the same
  * tolerance: the cycle peaks up to the peak agree with those without them
- * to 1e-6 of the peak, the later ones to 1 % as for the predictor, and the
+ * to 1e-6 of the peak, the third one to 2 % as for the predictor, and the
  * run needs at least 15 % fewer factorisations per step (each Newton
  * correction from a good iterate is replaced by chord corrections).
  * The extrapolated predictor starts each step
@@ -178,9 +182,9 @@ main(int argc, char **argv)
   check(peak_difference(a, d, peak, 0, n) < 1e-6,
         "chord corrections: the same cycle peaks (1e-6 of the peak) up to the "
         "peak as a new tangent for every correction");
-  check(peak_difference(a, d, peak, n, a.size()) < 1e-2,
-        "chord corrections: the cycle peaks after the collapse within 1 % of "
-        "the peak");
+  check(peak_difference(a, d, peak, n, n + 1) < 2e-2,
+        "chord corrections: the peak of the cycle of the collapse within 2 % "
+        "of the peak");
   const auto per_step = [](const masonry::Json &s, const std::string &key) {
     return s.at(key).as_number() / s.at("steps").as_number();
   };
@@ -192,15 +196,22 @@ main(int argc, char **argv)
   check(peak_difference(d, b, peak, 0, n) < 1e-6,
         "extrapolated predictor: the same cycle peaks (1e-6 of the peak) up "
         "to the peak");
-  check(peak_difference(d, b, peak, n, d.size()) < 1e-2,
-        "extrapolated predictor: the cycle peaks after the collapse within "
-        "1 % of the peak");
+  check(peak_difference(d, b, peak, n, n + 1) < 2e-2,
+        "extrapolated predictor: the peak of the cycle of the collapse within "
+        "2 % of the peak");
   check(peak_difference(b, c, peak, 0, n) < 1e-6,
         "factorisation reuse: the same cycle peaks as the direct solves "
         "(1e-6 of the peak) up to the peak");
-  check(peak_difference(b, c, peak, n, b.size()) < 1e-3,
-        "factorisation reuse: the cycle peaks after the collapse within "
+  check(peak_difference(b, c, peak, n, n + 1) < 1e-3,
+        "factorisation reuse: the peak of the cycle of the collapse within "
         "0.1 % of the peak");
+  bool collapsed = true;
+  for (const auto *p : {&a, &b, &c, &d})
+    collapsed = collapsed && p->size() == 4 && (*p)[2] < 0.5 * peak &&
+                (*p)[3] < 0.1 * peak;
+  check(collapsed,
+        "every run: the third cycle's peak below 0.5 of the peak, the "
+        "fourth's below 0.1 (collapsed in the third cycle)");
   check(predictor.at("newton_iterations").as_number() <
           0.9 * no_chord.at("newton_iterations").as_number() *
             predictor.at("steps").as_number() /

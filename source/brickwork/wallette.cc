@@ -716,20 +716,21 @@ namespace masonry
         summary["status"]   = status;
         if (!message.empty())
           summary["message"] = message;
-        const auto &a                      = assembler->statistics;
-        const auto &s                      = solver->statistics;
-        summary["steps"]                   = progress.step;
-        summary["newton_iterations"]       = statistics.total_newton;
-        summary["cut_backs"]               = statistics.total_cutbacks;
-        summary["linear_solves"]           = s.n_solves;
-        summary["matrix_assemblies"]       = a.n_matrix_assemblies;
-        summary["factorisations_reused"]   = s.n_factorisations_reused;
-        summary["factorisations"]          = s.n_factorisations;
-        summary["reuse_gmres_solves"]      = s.n_reuse_solves;
-        summary["reuse_gmres_iterations"]  = s.n_reuse_iterations;
-        summary["chord_solves"]            = s.n_chord_solves;
-        summary["deleted_cells"]           = specimen.n_deleted;
-        summary["direct_solver_fallbacks"] = s.n_direct_fallbacks;
+        const auto &a                        = assembler->statistics;
+        const auto &s                        = solver->statistics;
+        summary["steps"]                     = progress.step;
+        summary["newton_iterations"]         = statistics.total_newton;
+        summary["cut_backs"]                 = statistics.total_cutbacks;
+        summary["linear_solves"]             = s.n_solves;
+        summary["matrix_assemblies"]         = a.n_matrix_assemblies;
+        summary["factorisations_reused"]     = s.n_factorisations_reused;
+        summary["factorisations"]            = s.n_factorisations;
+        summary["null_pivot_factorisations"] = s.n_null_pivot_factorisations;
+        summary["reuse_gmres_solves"]        = s.n_reuse_solves;
+        summary["reuse_gmres_iterations"]    = s.n_reuse_iterations;
+        summary["chord_solves"]              = s.n_chord_solves;
+        summary["deleted_cells"]             = specimen.n_deleted;
+        summary["direct_solver_fallbacks"]   = s.n_direct_fallbacks;
         step_control->write_summary(summary);
         // share of the evaluations skipped by the elastic check, over all
         // ranks (work skipped where nothing can change)

@@ -18,8 +18,9 @@ namespace masonry
     {
       using State = DamagePlasticityBrick::State;
 
-      /** Number of doubles of a State. */
-      constexpr unsigned int n_state = 12;
+      /** Number of doubles of a State; with `IMPL-EX crack opening' =
+       * frozen, 6 more for the crack strain. */
+      constexpr unsigned int n_state = 12, n_crack = 6;
 
       /** Largest number of compressive and tensile returns in turn in one
        * update with `Tensile plastic flow' = crack (see update()). */
@@ -71,7 +72,8 @@ namespace masonry
       State
       unpack(ConstStateView v)
       {
-        AssertDimension(v.size(), n_state);
+        Assert(v.size() == n_state || v.size() == n_state + n_crack,
+               dealii::ExcInternalError());
         State s;
         for (unsigned int i = 0; i < 6; ++i)
           s.plastic_strain.access_raw_entry(i) = v[i];
@@ -81,13 +83,17 @@ namespace masonry
         s.kappa_c     = v[9];
         s.damage_t    = v[10];
         s.damage_c    = v[11];
+        if (v.size() > n_state)
+          for (unsigned int i = 0; i < n_crack; ++i)
+            s.crack_strain.access_raw_entry(i) = v[n_state + i];
         return s;
       }
 
       void
       pack(const State &s, StateView v)
       {
-        AssertDimension(v.size(), n_state);
+        Assert(v.size() == n_state || v.size() == n_state + n_crack,
+               dealii::ExcInternalError());
         for (unsigned int i = 0; i < 6; ++i)
           v[i] = s.plastic_strain.access_raw_entry(i);
         v[6]  = s.threshold_t;
@@ -96,6 +102,9 @@ namespace masonry
         v[9]  = s.kappa_c;
         v[10] = s.damage_t;
         v[11] = s.damage_c;
+        if (v.size() > n_state)
+          for (unsigned int i = 0; i < n_crack; ++i)
+            v[n_state + i] = s.crack_strain.access_raw_entry(i);
       }
     } // namespace
 
@@ -267,7 +276,13 @@ namespace masonry
                                         SymmetricTensor<2, 3>       &stress,
                                         SymmetricTensor<4, 3> *tangent) const
     {
-      // damages and plastic strain extrapolated and frozen
+      // damages and plastic strain extrapolated and frozen; with `IMPL-EX
+      // crack opening' = frozen the cracks' plastic opening is not
+      // extrapolated but kept at its last converged value: set by the
+      // neighbours once a crack has lost its strength, its extrapolation
+      // acts as an imposed strain that the next update takes up as opening
+      // again, a loop that grew by 8-31 % a step whatever the step length
+      // (doc/brickwork.md, Stabilisation)
       auto extrapolate = [&](const double d, const double d_older) {
         return std::clamp(d + ratio_t * (d - d_older), d, d_max);
       };
@@ -275,7 +290,10 @@ namespace masonry
       const double d_c = extrapolate(old.damage_c, older.damage_c);
       const SymmetricTensor<2, 3> plastic =
         old.plastic_strain +
-        ratio_t * (old.plastic_strain - older.plastic_strain);
+        ratio_t * (freeze_crack_opening ?
+                     (old.plastic_strain - older.plastic_strain) -
+                       (old.crack_strain - older.crack_strain) :
+                     old.plastic_strain - older.plastic_strain);
       // stress = (1 - d_t) P(s) + (1 - d_c) (s - P(s)), s = C0 : (e - e_p)
       // with everything but e frozen, so the tangent is exact and closed:
       // ((d_c - d_t) dP/ds + (1 - d_c) I) : C0
@@ -584,6 +602,7 @@ namespace masonry
         e = illinois_root(excess, a, b, fa, fb, 1e-13 * phi * f_t, 1e-15, 200);
       const double dp = tension(e, l, phi).plastic - p_old;
       updated.plastic_strain += dp * N;
+      updated.crack_strain += dp * N;
       split(s0 - dp * G, plus, minus, tau_t, tau_c, rho_t, rho_c);
       return e;
     }
@@ -726,6 +745,7 @@ namespace masonry
                                            (1 - d_c) * tau_c / (phi * f_c),
                                            T);
                     updated.plastic_strain += (1 - s) * compliance(plus);
+                    updated.crack_strain += (1 - s) * compliance(plus);
                     plus *= s;
                     updated.kappa_t     = e;
                     updated.threshold_t = T;

@@ -260,7 +260,17 @@ namespace masonry
                         ExcMessage(name +
                                    " is not available in this Trilinos"));
             if (const auto mumps = dynamic_cast<Amesos_Mumps *>(direct.get()))
-              choose_ordering(*mumps, system.comm);
+              {
+                choose_ordering(*mumps, system.comm);
+                // null pivot detection (MUMPS's threshold, CNTL(3) = 0): a
+                // brick held only by debonded frictionless joints, or a
+                // deleted cell's neighbour, is free in some direction and
+                // the tangent singular there. Without it, MUMPS factorised
+                // the round-off and the corrections moved such parts
+                // arbitrarily far, so Newton stalled at the joints' contact
+                // switches (doc/brickwork.md, Stabilisation)
+                mumps->SetICNTL(24, 1);
+              }
             int result = 0;
             quietly([&]() { return direct->SymbolicFactorization(); }, result);
             if (result != 0 || failed())
@@ -322,6 +332,10 @@ namespace masonry
                 if (result != 0 || failed())
                   fail("could not factorise the tangent");
                 ++statistics.n_factorisations;
+                if (const auto mumps =
+                      dynamic_cast<Amesos_Mumps *>(direct.get()))
+                  if (mumps->GetINFOG()[27] > 0) // INFOG(28)
+                    ++statistics.n_null_pivot_factorisations;
                 factorised = true;
                 is_initial = initial_tangent;
               }

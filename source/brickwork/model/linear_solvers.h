@@ -30,8 +30,9 @@ namespace masonry
         /** Solves done by GMRES with an earlier factorisation
          * (`Factorisation reuse iterations'), and their iterations. */
         unsigned int n_reuse_solves = 0, n_reuse_iterations = 0;
-        /** Numeric factorisations. */
-        unsigned int n_factorisations = 0;
+        /** Numeric factorisations, and those of them in which MUMPS found
+         * null pivots (a singular tangent: parts free in some direction). */
+        unsigned int n_factorisations = 0, n_null_pivot_factorisations = 0;
         /** Solves with the kept factorisation of an earlier tangent
          * (chord steps of Newton). */
         unsigned int n_chord_solves = 0;

@@ -128,6 +128,11 @@ namespace masonry
         /** Damage in tension and compression (0 intact to 1), after the
          * viscous regularisation. */
         double damage_t = 0, damage_c = 0;
+        /** The part of plastic_strain that the cracks' opening added
+         * (tensile flow; dimensionless): with `IMPL-EX crack opening' =
+         * frozen, IMPL-EX extrapolates only the rest (a state variable only
+         * then). */
+        SymmetricTensor<2, 3> crack_strain;
       };
 
       static void
@@ -468,8 +473,10 @@ namespace masonry
       /** `Plastic Poisson's ratio': elastic (radial) or nu_p. */
       bool radial_flow = true;
       /** `Tensile plastic flow' = crack. */
-      bool   crack_flow = false;
-      double nu_p       = 0.15;
+      bool crack_flow = false;
+      /** `IMPL-EX crack opening' = frozen. */
+      bool   freeze_crack_opening = false;
+      double nu_p                 = 0.15;
       /** `Confinement coefficient' and Lubliner's gamma from it. */
       double k_confinement = 0, gamma = 0;
       /** `Nonlocal length' (m, 0: local). */
