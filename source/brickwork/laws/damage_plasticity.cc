@@ -277,12 +277,8 @@ namespace masonry
                                         SymmetricTensor<4, 3> *tangent) const
     {
       // damages and plastic strain extrapolated and frozen; with `IMPL-EX
-      // crack opening' = frozen the cracks' plastic opening is not
-      // extrapolated but kept at its last converged value: set by the
-      // neighbours once a crack has lost its strength, its extrapolation
-      // acts as an imposed strain that the next update takes up as opening
-      // again, a loop that grew by 8-31 % a step whatever the step length
-      // (doc/brickwork.md, Stabilisation)
+      // crack opening' = frozen the cracks' opening (crack_strain) is only
+      // frozen: extrapolated, it fed itself (doc/brickwork.md, Stabilisation)
       auto extrapolate = [&](const double d, const double d_older) {
         return std::clamp(d + ratio_t * (d - d_older), d, d_max);
       };
