@@ -46,6 +46,38 @@ namespace
     const auto        slash = self.rfind('/');
     return slash == std::string::npos ? "" : self.substr(0, slash + 1);
   }
+
+  /**
+   * OpenBLAS (the BLAS under MUMPS) picks its kernels by the
+   * processor's family and model number, and takes its oldest generic
+   * kernels (Prescott, SSE3) for a model it does not know: Debian 12's
+   * 0.3.21 does so on processors newer than itself (family 6, model 207
+   * on the development machine, which has AVX-512). This names the
+   * kernels by the instruction sets the processor and the operating
+   * system support: SkylakeX with AVX-512 (F, CD, BW, DQ, VL), Haswell
+   * with AVX2 and FMA, otherwise OpenBLAS's own choice. Only a default:
+   * a user's OPENBLAS_CORETYPE wins; another BLAS ignores it. Faster
+   * factorisations, other round-off (contrib/benchmarks/wallette_cyclic/
+   * results-2026-11-28c.md).
+   */
+  void
+  choose_blas_kernels()
+  {
+#if defined(__x86_64__) || defined(__i386__)
+    __builtin_cpu_init();
+    const char *kernels = nullptr;
+    if (__builtin_cpu_supports("avx512f") &&
+        __builtin_cpu_supports("avx512cd") &&
+        __builtin_cpu_supports("avx512bw") &&
+        __builtin_cpu_supports("avx512dq") &&
+        __builtin_cpu_supports("avx512vl"))
+      kernels = "SkylakeX";
+    else if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"))
+      kernels = "Haswell";
+    if (kernels)
+      ::setenv("OPENBLAS_CORETYPE", kernels, 0);
+#endif
+  }
 } // namespace
 
 int
@@ -84,6 +116,7 @@ main(int argc, char **argv)
   // directory, and one that ends removes it under another that starts.)
   if (!under_mpi())
     ::setenv("OMPI_MCA_pml", "ob1", 0);
+  choose_blas_kernels();
 
   // next to the executable (build tree), in ../lib (installed), or where
   // the dynamic loader finds it; RTLD_GLOBAL for Open MPI's components.
