@@ -59,10 +59,7 @@ namespace
   unsigned int
   n_state(const BrickMaterial &l)
   {
-    unsigned int n = 0;
-    for (const auto &v : l.state_variables())
-      n += v.n_components;
-    return n;
+    return masonry::brickwork::n_state_values(l.state_variables());
   }
 
   /** C0 : e from E and nu. */

@@ -105,10 +105,7 @@ namespace
   unsigned int
   n_state(const BrickMaterial &law)
   {
-    unsigned int n = 0;
-    for (const auto &v : law.state_variables())
-      n += v.n_components;
-    return n;
+    return masonry::brickwork::n_state_values(law.state_variables());
   }
 
   /** A converged point of a path. */
