@@ -146,7 +146,7 @@ namespace masonry
       prm.declare_entry(
         "IMPL-EX floor correction",
         "accept",
-        Selection("accept|iterate"),
+        Selection("accept|iterate|iterate at any step"),
         "What IMPL-EX does with a step at `IMPL-EX minimum step' whose "
         "damage error is still over `IMPL-EX damage tolerance': `accept' "
         "keeps it (counted in implex_steps_over_tolerance); `iterate' "
@@ -159,8 +159,15 @@ namespace masonry
         "equilibrium as those of any accepted step. summary.json: "
         "implex_steps_corrected, and implex_steps_uncorrected for steps "
         "still over the tolerance after the passes (kept) or whose "
-        "solve failed (the IMPL-EX step is kept). Needs `Nonlocal "
-        "length' = 0.");
+        "solve failed (the IMPL-EX step is kept). `iterate at any step' "
+        "corrects a step of any size over the tolerance the same way at "
+        "its own size, instead of redoing it smaller first; a step whose "
+        "correction does not reach the tolerance within 4 passes, or "
+        "whose solve fails, is redone smaller, and at the floor it is "
+        "corrected as by `iterate' (fewer, larger steps where the damage "
+        "error comes from points that start to soften, which smaller "
+        "steps do not remove; doc/brickwork.md, IMPL-EX floor "
+        "correction). Both need `Nonlocal length' = 0.");
       prm.declare_entry("Linear solver tolerance",
                         "1e-10",
                         Double(0),
@@ -200,7 +207,9 @@ namespace masonry
       s.linear_solver.linear_solver    = prm.get("Linear solver");
       s.linear_solver.linear_tolerance = positive("Linear solver tolerance");
       s.integrator.implex_floor_correction =
-        prm.get("IMPL-EX floor correction") == "iterate";
+        prm.get("IMPL-EX floor correction") != "accept";
+      s.integrator.implex_correct_any_step =
+        prm.get("IMPL-EX floor correction") == "iterate at any step";
     }
   } // namespace analysis
 } // namespace masonry

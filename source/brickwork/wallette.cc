@@ -466,10 +466,9 @@ namespace masonry
             const double applied   = progress.applied;
             const double taken     = std::abs(next - applied);
             const double time_step = taken / settings.protocol.platen_speed;
-            // IMPL-EX: no extrapolation across a reversal of the platen,
-            // and at most the step control's growth (an unbounded ratio
-            // after a tiny step made the cyclic examples run away:
-            // doc/brickwork.md, IMPL-EX; tests/brickwork_implex_ratio)
+            // IMPL-EX: no extrapolation across a reversal, at most the
+            // step growth (an unbounded ratio made the cyclic examples run
+            // away: doc/brickwork.md, IMPL-EX; brickwork_implex_ratio)
             const double ratio = progress.last_increment > 0 &&
                                      curve.size() > 1 &&
                                      curve.back().unloading == leg.unloading &&
@@ -478,10 +477,8 @@ namespace masonry
                                             settings.protocol.growth) :
                                    0.;
             integrator->set_ratio(ratio);
-            // the predictor: the last step's displacement increment scaled
-            // to this one (zero after a reversal or a deletion); the
-            // platen DOFs are set by the Newton step
-            // (a correction starts from the IMPL-EX solution)
+            // the predictor: the last step's increment scaled to this one
+            // (none after a reversal or a deletion, or in a correction)
             if (settings.newton.extrapolated_predictor && ratio > 0 &&
                 !correction.active())
               system.u.add(ratio, system.last_increment);
@@ -507,7 +504,7 @@ namespace masonry
             if (!ok && correction.active())
               {
                 system.u = u_converged;
-                correction.fail(failure);
+                correction.fail(failure, taken, progress);
                 continue;
               }
             if (!ok)
@@ -565,7 +562,11 @@ namespace masonry
               }
             if (correction.active())
               {
-                if (correction.again())
+                const FloorCorrection::Next then =
+                  correction.again(taken, progress);
+                if (then == FloorCorrection::Next::redo)
+                  system.u = u_converged;
+                if (then != FloorCorrection::Next::accept)
                   continue;
               }
             else
@@ -581,7 +582,7 @@ namespace masonry
                   }
                 if (verdict == Verdict::correct && correction.wanted())
                   {
-                    correction.start(error);
+                    correction.start(error, step_control->may_redo(taken));
                     continue;
                   }
               }

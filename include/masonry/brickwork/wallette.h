@@ -196,6 +196,11 @@ namespace masonry
        * tolerance is solved again with its own updated states, frozen,
        * until their update no longer changes them (else it is accepted). */
       bool implex_floor_correction = false;
+      /** IMPL-EX (`IMPL-EX floor correction = iterate at any step'): a step
+       * of any size over the tolerance is corrected at its own size first;
+       * only a correction that does not reach the tolerance within
+       * implex_passes_above_floor passes, or fails, is redone smaller. */
+      bool implex_correct_any_step = false;
       /** Threads per MPI rank that evaluate the laws of the cells and
        * interfaces in an assembly (`Assembly threads'; 0: deal.II's
        * default, the cores divided among the ranks). */

@@ -49,38 +49,58 @@ namespace masonry
       }
 
       void
-      FloorCorrection::start(const double error)
+      FloorCorrection::start(const double error, const bool may_redo_step)
       {
         // from the IMPL-EX solution and its updated states
         freeze();
         integrator.set_mode(Integrator::Mode::frozen);
-        passes = 0;
+        passes   = 0;
+        may_redo = may_redo_step;
         pcout << "  IMPL-EX: step solved again with its updated states "
                  "(damage error "
               << error << ")\n";
       }
 
-      bool
-      FloorCorrection::again()
+      FloorCorrection::Next
+      FloorCorrection::again(const double taken, Progress &progress)
       {
         const double change = damage_change();
         pcout << "  IMPL-EX: correction " << ++passes << ", damage change "
               << change << "\n";
-        if (change > tolerance && passes < max_correction_passes)
+        const unsigned int limit =
+          may_redo ? max_passes_above_floor : max_correction_passes;
+        if (change > tolerance && passes < limit)
           {
             freeze();
-            return true;
+            return Next::again;
+          }
+        integrator.set_mode(Integrator::Mode::extrapolated);
+        if (change > tolerance && may_redo)
+          {
+            control.redo_after_correction(taken, progress);
+            pcout << "  IMPL-EX: correction not converged, step redone, "
+                     "step "
+                  << progress.increment << " m\n";
+            return Next::redo;
           }
         control.corrected(change <= tolerance);
-        integrator.set_mode(Integrator::Mode::extrapolated);
-        return false;
+        return Next::accept;
       }
 
       void
-      FloorCorrection::fail(const std::string &failure)
+      FloorCorrection::fail(const std::string &failure,
+                            const double       taken,
+                            Progress          &progress)
       {
-        control.corrected(false);
         integrator.set_mode(Integrator::Mode::extrapolated);
+        if (may_redo)
+          {
+            control.redo_after_correction(taken, progress);
+            pcout << "  IMPL-EX: correction failed (" << failure
+                  << "), step redone, step " << progress.increment << " m\n";
+            return;
+          }
+        control.corrected(false);
         failed_here = true;
         pcout << "  IMPL-EX: correction failed (" << failure
               << "), the IMPL-EX step is kept\n";

@@ -6,7 +6,9 @@
  * frozen (not extrapolated), updated at the new displacements, and so on
  * until the update changes no damage by more than the tolerance (a
  * fixed-point iteration towards the implicit solution of the step;
- * doc/brickwork.md, IMPL-EX floor correction).
+ * doc/brickwork.md, IMPL-EX floor correction). With `iterate at any step'
+ * a step of any size is corrected so, and redone smaller only when its
+ * correction does not converge.
  */
 #ifndef masonry_brickwork_model_floor_correction_h
 #define masonry_brickwork_model_floor_correction_h
@@ -68,19 +70,36 @@ namespace masonry
         }
 
         /** Start the correction of the step just solved (damage error
-         * @p error): its updated states are frozen. */
+         * @p error): its updated states are frozen. @p may_redo: a
+         * correction that does not converge within max_passes_above_floor
+         * passes, or fails, ends in a smaller step (`IMPL-EX floor
+         * correction = iterate at any step', above the floor). */
         void
-        start(const double error);
+        start(const double error, const bool may_redo);
 
-        /** A pass converged and its states were updated: whether to solve
-         * again (else the step is accepted). */
-        bool
-        again();
+        /** What follows a converged pass. */
+        enum class Next
+        {
+          /** solve again */
+          again,
+          /** accept the step */
+          accept,
+          /** redo the step smaller */
+          redo
+        };
+
+        /** A pass of the step of size @p taken converged and its states
+         * were updated: what next (redo: progress.increment is set). */
+        Next
+        again(const double taken, Progress &progress);
 
         /** A pass did not converge (@p failure: why): back to IMPL-EX,
-         * whose step is solved again and kept. */
+         * whose step is solved again and kept; or (may_redo) it is redone
+         * smaller (progress.increment is set). */
         void
-        fail(const std::string &failure);
+        fail(const std::string &failure,
+             const double       taken,
+             Progress          &progress);
 
         /** The step was accepted. */
         void
@@ -104,7 +123,7 @@ namespace masonry
         MPI_Comm                    comm;
         dealii::ConditionalOStream &pcout;
         unsigned int                passes      = 0;
-        bool                        failed_here = false;
+        bool                        failed_here = false, may_redo = false;
       };
     } // namespace model
   }   // namespace brickwork

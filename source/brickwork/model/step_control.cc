@@ -168,6 +168,16 @@ namespace masonry
         was_corrected = converged;
       }
 
+      bool
+      StepSizeControl::may_redo(const double) const
+      {
+        return false;
+      }
+
+      void
+      StepSizeControl::redo_after_correction(const double, Progress &)
+      {}
+
       void
       StepSizeControl::write_summary(Json &) const
       {}
@@ -211,7 +221,10 @@ namespace masonry
          * first step that re-enters the envelope (elastic, nothing to
          * extrapolate from) overshoots the cycle peak by up to E0 x the
          * step. At the floor it is accepted or (`IMPL-EX floor correction
-         * = iterate') corrected.
+         * = iterate') corrected. With `iterate at any step' a step of any
+         * size is corrected first and redone smaller only when its
+         * correction does not converge; a corrected step keeps its size
+         * for the next one.
          */
         class DamageErrorControl : public StepSizeControl
         {
@@ -224,6 +237,7 @@ namespace masonry
             , growth(growth)
             , nominal(nominal)
             , correct(s.implex_floor_correction)
+            , correct_any_step(s.implex_correct_any_step)
           {}
 
           Verdict
@@ -232,6 +246,8 @@ namespace masonry
                 Progress    &progress) override
           {
             last_ratio = error / tolerance;
+            if (last_ratio > 1 && correct_any_step)
+              return Verdict::correct;
             if (last_ratio > 1 && taken > floor * (1 + 1e-12))
               {
                 ++n_redone;
@@ -244,11 +260,28 @@ namespace masonry
             return Verdict::accept;
           }
 
+          bool
+          may_redo(const double taken) const override
+          {
+            return correct_any_step && taken > floor * (1 + 1e-12);
+          }
+
+          void
+          redo_after_correction(const double taken, Progress &progress) override
+          {
+            ++n_redone;
+            progress.increment = std::max(shrunk(taken), floor);
+          }
+
           void
           after_step(const unsigned int, Progress &progress) override
           {
             double &increment = progress.increment;
-            if (last_ratio > 1)
+            if (last_ratio > 1 && was_corrected && correct_any_step)
+              {
+                // the correction made the step implicit: keep its size
+              }
+            else if (last_ratio > 1)
               {
                 // accepted only at (or below) the floor: shrink, but not
                 // below the floor (and never raise a step that a cut-back
@@ -286,7 +319,7 @@ namespace masonry
           }
 
           double tolerance, floor, growth, nominal;
-          bool   correct;
+          bool   correct, correct_any_step;
         };
       } // namespace
 

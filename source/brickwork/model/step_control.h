@@ -103,6 +103,11 @@ namespace masonry
       constexpr double       stall_fraction = 1e-3;
       constexpr unsigned int stall_steps    = 50;
 
+      /** Passes of a correction above the floor (`IMPL-EX floor
+       * correction = iterate at any step'); then the step is redone
+       * smaller. */
+      constexpr unsigned int max_passes_above_floor = 4;
+
       /** What to do with a converged step (StepSizeControl::judge()). */
       enum class Verdict
       {
@@ -110,8 +115,8 @@ namespace masonry
         accept,
         /** solve it again smaller (progress.increment is set) */
         redo,
-        /** IMPL-EX at the step floor: solve it again with its updated
-         * states */
+        /** IMPL-EX at the step floor (`iterate at any step': at any
+         * size): solve it again with its updated states */
         correct
       };
 
@@ -131,6 +136,15 @@ namespace masonry
          * damage change within the tolerance) or not (kept as it is). */
         virtual void
         corrected(const bool converged);
+        /** Whether a correction of a step of size @p taken that does not
+         * converge is redone smaller (else it is kept). */
+        virtual bool
+        may_redo(const double taken) const;
+        /** The correction of a step over the floor of size @p taken did not
+         * reach the tolerance or failed: it is redone smaller
+         * (progress.increment is set). */
+        virtual void
+        redo_after_correction(const double taken, Progress &progress);
         /** An accepted step of @p iterations Newton iterations: the next
          * increment, from the errors of its last judge(). */
         virtual void
