@@ -199,7 +199,8 @@ namespace masonry
       /** IMPL-EX (`IMPL-EX floor correction = iterate at any step'): a step
        * of any size over the tolerance is corrected at its own size first;
        * only a correction that does not reach the tolerance within
-       * implex_passes_above_floor passes, or fails, is redone smaller. */
+       * model::max_passes_above_floor (4) passes, or fails, is redone
+       * smaller. */
       bool implex_correct_any_step = false;
       /** Threads per MPI rank that evaluate the laws of the cells and
        * interfaces in an assembly (`Assembly threads'; 0: deal.II's
