@@ -31,7 +31,7 @@ import time
 here = os.path.dirname(os.path.abspath(__file__))
 root = os.path.dirname(os.path.dirname(os.path.dirname(here)))
 sys.path.insert(0, os.path.join(root, "contrib", "study"))
-from study import set_entry  # noqa: E402
+from study import get_in, set_entry  # noqa: E402
 import report  # noqa: E402
 sys.path.insert(0, os.path.dirname(here))
 from wallette_common import cpu_seconds  # noqa: E402
@@ -46,14 +46,6 @@ def example_text(thickness):
     path = os.path.join(root, "prm", "examples",
                         f"wallette-{thickness}-cyclic.prm")
     return path, open(path).read()
-
-
-def entry(text, name):
-    for line in text.splitlines():
-        s = line.split("#")[0].strip()
-        if s.startswith("set ") and s[4:].split("=")[0].strip() == name:
-            return s.split("=", 1)[1].strip()
-    return None
 
 
 def run(args, name, steps, tolerance):
@@ -111,8 +103,9 @@ def main():
     args = p.parse_args()
     os.makedirs(args.output, exist_ok=True)
     _, text = example_text(args.thickness)
-    tolerance = float(entry(text, "IMPL-EX damage tolerance") or 0.05)
-    target = float(entry(text, "Target strain"))
+    tolerance = float(get_in(text, ["Wallette"], "IMPL-EX damage tolerance")
+                      or 0.05)
+    target = float(get_in(text, ["Wallette"], "Target strain"))
     cases = [(f"{args.thickness}-n{n}", n, tolerance)
              for n in (int(x) for x in args.steps.split(","))]
     cases.append((f"{args.thickness}-reference", args.reference_steps,
