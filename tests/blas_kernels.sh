@@ -13,7 +13,9 @@ prm=$2
 core() {
   "$@" --validate "$prm" 2>&1 | sed -n 's/^Core: //p' | head -1
 }
-default=$(OPENBLAS_VERBOSE=2 core "$masonry")
+# the launcher's own choice: without a user's OPENBLAS_CORETYPE (a
+# machine may set one for every process)
+default=$(OPENBLAS_VERBOSE=2 core env -u OPENBLAS_CORETYPE "$masonry")
 if [[ -z $default ]]; then
   echo "SKIPPED: the BLAS does not report its kernels (not OpenBLAS with DYNAMIC_ARCH)"
   exit 77
