@@ -10,6 +10,7 @@
  */
 #include <deal.II/base/mpi.h>
 
+#include <array>
 #include <cmath>
 #include <iostream>
 
@@ -96,4 +97,70 @@ main(int argc, char **argv)
                        mono->legs()[0].target == 3e-3 &&
                        mono->amplitude(1) == 3e-3,
                      "monotonic: one ramp to the target");
+
+  // IMPL-EX step control (`Damage integration = implex', `accept'): a step
+  // over the tolerance is redone smaller in proportion (0.9 / ratio, to no
+  // less than a fifth), never below the floor of its leg, and at that floor
+  // it is accepted; the unloading legs take `IMPL-EX minimum step when
+  // unloading' x the nominal step as theirs (0: the loading floor)
+  const double       d_nominal = 1e-4;
+  IntegratorSettings integrator;
+  integrator.implex                        = true;
+  integrator.implex_tolerance              = 0.05;
+  integrator.implex_minimum_step           = 0.1;
+  integrator.implex_minimum_step_unloading = 0.5;
+  ProtocolSettings p;
+  p.growth             = 2;
+  const auto floors_of = [&](const IntegratorSettings &i) {
+    // the step a run at the nominal size ends at when every step is 4 x
+    // over the tolerance (a snap): redone smaller, then accepted at the floor
+    const auto control =
+      create_step_size_control(i, p, NewtonSettings(), d_nominal);
+    std::array<double, 2> floors{};
+    for (const bool unloading : {false, true})
+      {
+        control->set_leg({0., unloading, 1});
+        Progress progress;
+        progress.increment = d_nominal;
+        for (unsigned int k = 0; k < 20; ++k)
+          {
+            const double taken = progress.increment;
+            if (control->judge(taken, 4 * i.implex_tolerance, progress) ==
+                Verdict::accept)
+              {
+                control->after_step(3, progress);
+                floors[unloading] = taken;
+                break;
+              }
+          }
+      }
+    return floors;
+  };
+  const auto both = floors_of(integrator);
+  vault_tests::check(std::abs(both[0] - 0.1 * d_nominal) < 1e-12 * d_nominal &&
+                       std::abs(both[1] - 0.5 * d_nominal) < 1e-12 * d_nominal,
+                     "IMPL-EX: a step 4 x over the tolerance is accepted at "
+                     "0.1 x the nominal step when loading and at 0.5 x when "
+                     "unloading");
+  {
+    // an unloading leg that inherits the loading floor starts at its own
+    const auto control =
+      create_step_size_control(integrator, p, NewtonSettings(), d_nominal);
+    Progress progress;
+    progress.increment = 0.1 * d_nominal;
+    control->start_leg({0., true, 1}, progress);
+    const double unloading = progress.increment;
+    control->start_leg({1e-3, false, 2}, progress);
+    vault_tests::check(std::abs(unloading - 0.5 * d_nominal) <
+                           1e-12 * d_nominal &&
+                         progress.increment == unloading,
+                       "IMPL-EX: an unloading leg starts at its floor (0.5 "
+                       "x the nominal step) when the loading leg hands on "
+                       "0.1 x; a loading leg keeps the step it is given");
+  }
+  integrator.implex_minimum_step_unloading = 0;
+  const auto same                          = floors_of(integrator);
+  vault_tests::check(std::abs(same[1] - 0.1 * d_nominal) < 1e-12 * d_nominal,
+                     "IMPL-EX: with `IMPL-EX minimum step when unloading' = "
+                     "0 the unloading legs keep the loading floor");
 }

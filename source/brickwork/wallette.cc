@@ -432,13 +432,7 @@ namespace masonry
         // a non-finite failure since the steps fell below the stall floor
         std::string recent_non_finite;
         // no progress: steps this small, stall_steps in a row
-        const double stall_floor =
-          nominal *
-          std::min(stall_fraction,
-                   settings.integrator.implex ?
-                     settings.integrator.implex_minimum_step :
-                     1.) *
-          (1 - 1e-9);
+        const double stall_floor = stall_step(settings.integrator, nominal);
         // the state of the last converged step is bad: not written
         bool bad_state = false;
         // the physical bound on the platen stress (model/bounds.h)
@@ -462,7 +456,11 @@ namespace masonry
             double         next;
             if (!next_position(
                   leg, curve, settings.protocol, nominal, progress, next))
-              continue;
+              {
+                if (progress.segment < legs.size())
+                  step_control->start_leg(legs[progress.segment], progress);
+                continue;
+              }
             const double applied   = progress.applied;
             const double taken     = std::abs(next - applied);
             const double time_step = taken / settings.protocol.platen_speed;
@@ -477,6 +475,7 @@ namespace masonry
                                             settings.protocol.growth) :
                                    0.;
             integrator->set_ratio(ratio);
+            step_control->set_leg(leg);
             // the predictor: the last step's increment scaled to this one
             // (none after a reversal or a deletion, or in a correction)
             if (settings.newton.extrapolated_predictor && ratio > 0 &&

@@ -192,6 +192,10 @@ namespace masonry
        * of the nominal step (a softening snap keeps the damage error large
        * however small the step). */
       double implex_minimum_step = 0.01;
+      /** The floor of the unloading legs, as a fraction of the nominal
+       * step (`IMPL-EX minimum step when unloading'; 0: the same as
+       * implex_minimum_step). */
+      double implex_minimum_step_unloading = 0;
       /** IMPL-EX: a step at the floor whose damage error is over the
        * tolerance is solved again with its own updated states, frozen,
        * until their update no longer changes them (else it is accepted). */

@@ -155,11 +155,29 @@ namespace masonry
         return true;
       }
 
+      double
+      stall_step(const IntegratorSettings &integrator, const double nominal)
+      {
+        return nominal *
+               std::min(stall_fraction,
+                        integrator.implex ? integrator.implex_minimum_step :
+                                            1.) *
+               (1 - 1e-9);
+      }
+
       Verdict
       StepSizeControl::judge(const double, const double, Progress &)
       {
         return Verdict::accept;
       }
+
+      void
+      StepSizeControl::set_leg(const Segment &)
+      {}
+
+      void
+      StepSizeControl::start_leg(const Segment &, Progress &)
+      {}
 
       void
       StepSizeControl::corrected(const bool converged)
@@ -224,7 +242,10 @@ namespace masonry
          * = iterate') corrected. With `iterate at any step' a step of any
          * size is corrected first and redone smaller only when its
          * correction does not converge; a corrected step keeps its size
-         * for the next one.
+         * for the next one. The unloading legs may have a floor of their
+         * own (`IMPL-EX minimum step when unloading'): there the damage
+         * error comes from points that snap open (mostly mortar in
+         * tension), which a smaller step does not remove.
          */
         class DamageErrorControl : public StepSizeControl
         {
@@ -234,6 +255,10 @@ namespace masonry
                              const double              nominal)
             : tolerance(s.implex_tolerance)
             , floor(s.implex_minimum_step * nominal)
+            , loading_floor(floor)
+            , unloading_floor(s.implex_minimum_step_unloading > 0 ?
+                                s.implex_minimum_step_unloading * nominal :
+                                floor)
             , growth(growth)
             , nominal(nominal)
             , correct(s.implex_floor_correction)
@@ -258,6 +283,21 @@ namespace masonry
               return Verdict::correct;
             max_error = std::max(max_error, error);
             return Verdict::accept;
+          }
+
+          void
+          set_leg(const Segment &leg) override
+          {
+            floor = leg.unloading ? unloading_floor : loading_floor;
+          }
+
+          void
+          start_leg(const Segment &leg, Progress &progress) override
+          {
+            // a loading leg hands its last step (often its floor) on to
+            // the unloading leg that follows
+            set_leg(leg);
+            progress.increment = std::max(progress.increment, floor);
           }
 
           bool
@@ -318,8 +358,11 @@ namespace masonry
             return step * std::max(0.2, 0.9 / last_ratio);
           }
 
-          double tolerance, floor, growth, nominal;
-          bool   correct, correct_any_step;
+          /** The tolerance; the floor of the present leg (the loading or
+           * the unloading one). */
+          double tolerance, floor, loading_floor, unloading_floor, growth,
+            nominal;
+          bool correct, correct_any_step;
         };
       } // namespace
 

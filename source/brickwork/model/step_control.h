@@ -103,6 +103,11 @@ namespace masonry
       constexpr double       stall_fraction = 1e-3;
       constexpr unsigned int stall_steps    = 50;
 
+      /** The step below which an accepted step counts towards a stall:
+       * stall_fraction x @p nominal, and below the IMPL-EX floor. */
+      double
+      stall_step(const IntegratorSettings &integrator, const double nominal);
+
       /** Passes of a correction above the floor (`IMPL-EX floor
        * correction = iterate at any step'); then the step is redone
        * smaller. */
@@ -132,6 +137,15 @@ namespace masonry
          */
         virtual Verdict
         judge(const double taken, const double error, Progress &progress);
+        /** The leg of the next step (its floor may depend on whether the
+         * leg unloads). */
+        virtual void
+        set_leg(const Segment &leg);
+        /** Leg @p leg starts (called once, when the protocol moves on to
+         * it): a leg with a higher floor than the step it inherits starts
+         * at its floor (progress.increment). */
+        virtual void
+        start_leg(const Segment &leg, Progress &progress);
         /** A step judged `correct' was corrected (@p converged: its
          * damage change within the tolerance) or not (kept as it is). */
         virtual void
