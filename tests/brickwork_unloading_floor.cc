@@ -1,0 +1,70 @@
+/**
+ * `IMPL-EX minimum step when unloading' in a run: the cracked cyclic
+ * wallette of brickwork_solver_fallback (2 x 1 x 1 cells per brick,
+ * strength scatter, deletion, IMPL-EX with `accept', MUMPS), with the
+ * IMPL-EX floor at 0.1 of the nominal step (0.008 H / 40).
+ *
+ * (a) With the unloading floor 0 (the loading floor on every leg) some
+ *     unloading steps are smaller than half the nominal step: joints and
+ *     bricks that snap open while the wall unloads keep the damage error
+ *     over the tolerance, and the steps shrink towards the loading floor.
+ *     This makes the case one where (b) can fail.
+ * (b) With the unloading floor 0.5 no unloading step is smaller than half
+ *     the nominal step, the first of each leg included (the loading leg
+ *     before hands on its last step, often its floor: the unloading leg
+ *     starts at its own floor), except the steps aimed at the unloading
+ *     stress (they end within 20 % of it) and a step that a Newton
+ *     cut-back halved.
+ */
+#include "brickwork_tests.h"
+
+using namespace brickwork_tests;
+
+namespace
+{
+  std::string
+  wallette(const std::string &unloading_floor)
+  {
+    return cracked_cyclic_wallette(
+      "set Linear solver = direct\nset IMPL-EX minimum step = 0.1\n"
+      "set IMPL-EX minimum step when unloading = " +
+      unloading_floor + "\n");
+  }
+
+  /** Unloading steps (columns: 1 displacement, 4 stress, 8 cycle, 9
+   * unloading) smaller than 0.999 x @p limit (m), not counting the last
+   * of a leg and those that end below 1.2 x the unloading stress (0.1
+   * MPa). */
+  unsigned int
+  unloading_steps_below(const std::vector<std::vector<double>> &rows,
+                        const double                            limit)
+  {
+    unsigned int n = 0;
+    for (unsigned int j = 1; j + 1 < rows.size(); ++j)
+      if (rows[j][9] == 1 && rows[j + 1][9] == 1 &&
+          rows[j - 1][8] == rows[j][8] && rows[j][4] > 1.2 * 0.1e6 &&
+          rows[j - 1][1] - rows[j][1] < 0.999 * limit)
+        ++n;
+    return n;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const masonry::Json                      same = run("same", wallette("0"));
+  const masonry::Json                      own  = run("own", wallette("0.5"));
+  check(same.at("status").as_string() == "completed" &&
+          own.at("status").as_string() == "completed",
+        "both runs completed");
+  const double       half = 0.5 * 0.008 * own.at("height").as_number() / 40;
+  const unsigned int a    = unloading_steps_below(curve("same"), half);
+  const unsigned int b    = unloading_steps_below(curve("own"), half);
+  check(a > 0,
+        "(a) with the loading floor on every leg some unloading steps are "
+        "smaller than half the nominal step");
+  check(b <= own.at("cut_backs").as_number(),
+        "(b) with `IMPL-EX minimum step when unloading' = 0.5 none is, but "
+        "those aimed at the unloading stress and a cut-back's");
+}
