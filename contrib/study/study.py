@@ -479,11 +479,18 @@ def main():
     runs = []
     if "specimens" in parts:
         # seed by seed, so that a study cut short has every thickness
+        # (with one job; with more, the longest first, below)
         runs += [make_prm(t, s, directory, args.quick, args.model)
                  for s in seeds for t in thicknesses]
     if "sweep" in parts:
         runs += [make_sweep_prm(f_b, f_m, directory, args.quick, args.model)
                  for f_b in SWEEP_FB for f_m in SWEEP_FM]
+    if args.jobs > 1:
+        # the longest runs first (a triple wallette takes about twice a
+        # double's CPU time and ten times a single's), so that the last
+        # ones to finish are short and the cores stay busy to the end
+        rank = {"triple": 0, "double": 1, "sweep": 2, "single": 3}
+        runs.sort(key=lambda run: rank.get(run[0].split("-")[0], 2))
     print(f"study: {len(runs)} runs, {min(args.jobs, len(runs))} at a time"
           f"{' (quick)' if args.quick else ''}, model {args.model}, in "
           f"{directory}/", flush=True)
