@@ -15,6 +15,11 @@
  *     starts at its own floor), except the steps aimed at the unloading
  *     stress (they end within 20 % of it) and a step that a Newton
  *     cut-back halved.
+ * (c) A run of (b) stopped (`Maximum steps') in the middle of an unloading
+ *     leg, just before a step that the damage-error control redid and
+ *     accepted at the unloading floor, and resumed, reproduces the
+ *     uninterrupted curve (1e-12): the resumed run knows the leg's floor
+ *     (with the loading floor that step would shrink below it).
  */
 #include "brickwork_tests.h"
 
@@ -23,9 +28,10 @@ using namespace brickwork_tests;
 namespace
 {
   std::string
-  wallette(const std::string &unloading_floor)
+  wallette(const std::string &unloading_floor, const std::string &extra = "")
   {
     return cracked_cyclic_wallette(
+      extra +
       "set Linear solver = direct\nset IMPL-EX minimum step = 0.1\n"
       "set IMPL-EX minimum step when unloading = " +
       unloading_floor + "\n");
@@ -47,6 +53,29 @@ namespace
         ++n;
     return n;
   }
+
+  /** For every step N of results/@p name/log.txt, whether the damage-error
+   * control redid it (an `IMPL-EX: step redone' line before `Step N'). */
+  std::vector<bool>
+  redone_steps(const std::string &name)
+  {
+    std::ifstream     in("results/" + name + "/log.txt");
+    std::string       line;
+    std::vector<bool> redone;
+    bool              pending = false;
+    while (std::getline(in, line))
+      if (line.find("IMPL-EX: step redone") != std::string::npos)
+        pending = true;
+      else if (line.rfind("Step ", 0) == 0)
+        {
+          const unsigned int n = std::stoi(line.substr(5));
+          if (redone.size() <= n)
+            redone.resize(n + 1, false);
+          redone[n] = pending;
+          pending   = false;
+        }
+    return redone;
+  }
 } // namespace
 
 int
@@ -67,4 +96,31 @@ main(int argc, char **argv)
   check(b <= own.at("cut_backs").as_number(),
         "(b) with `IMPL-EX minimum step when unloading' = 0.5 none is, but "
         "those aimed at the unloading stress and a cut-back's");
+
+  // (c) the step before the first redone unloading step accepted at the
+  // floor, with two unloading steps of the same leg before it
+  const auto              rows   = curve("own");
+  const std::vector<bool> redone = redone_steps("own");
+  unsigned int            stop   = 0;
+  for (unsigned int n = 3; stop == 0 && n < rows.size() && n < redone.size();
+       ++n)
+    if (redone[n] && rows[n][9] == 1 && rows[n - 1][9] == 1 &&
+        rows[n - 2][9] == 1 && rows[n - 2][8] == rows[n][8] &&
+        rows[n][4] > 1.2 * 0.1e6 &&
+        std::abs(rows[n - 1][1] - rows[n][1] - half) < 1e-3 * half)
+      stop = n - 1;
+  check(stop > 0,
+        "(c) a redone unloading step accepted at the floor exists in the "
+        "middle of a leg");
+  const masonry::Json stopped =
+    run("resumed",
+        wallette("0.5", "set Maximum steps = " + std::to_string(stop) + "\n"));
+  check(stopped.at("status").as_string() == "interrupted",
+        "(c) the first part stops as interrupted");
+  const masonry::Json resumed =
+    run("resumed", wallette("0.5", "set Resume = true\n"));
+  const double diff = curve_difference(rows, curve("resumed"));
+  check(resumed.at("status").as_string() == "completed" && diff < 1e-12,
+        "(c) stopped there and resumed, the run reproduces the "
+        "uninterrupted curve (1e-12)");
 }
