@@ -486,9 +486,10 @@ def main():
         runs += [make_sweep_prm(f_b, f_m, directory, args.quick, args.model)
                  for f_b in SWEEP_FB for f_m in SWEEP_FM]
     if args.jobs > 1:
-        # the longest runs first (a triple wallette takes about twice a
-        # double's CPU time and ten times a single's), so that the last
-        # ones to finish are short and the cores stay busy to the end
+        # the longest runs first (results-2026-11-29: a triple specimen
+        # took about 2.5 times a double's CPU time and 6 times a single's,
+        # a sweep pair 12-94 s), so that the last ones to finish are short
+        # and the cores stay busy to the end
         rank = {"triple": 0, "double": 1, "sweep": 2, "single": 3}
         runs.sort(key=lambda run: rank.get(run[0].split("-")[0], 2))
     print(f"study: {len(runs)} runs, {min(args.jobs, len(runs))} at a time"
