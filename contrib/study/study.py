@@ -488,7 +488,7 @@ def main():
     if args.jobs > 1:
         # the longest runs first (results-2026-11-29: a triple specimen
         # took about 2.5 times a double's CPU time and 6 times a single's,
-        # a sweep pair 12-94 s), so that the last ones to finish are short
+        # a sweep pair 12-101 s), so that the last ones to finish are short
         # and the cores stay busy to the end
         rank = {"triple": 0, "double": 1, "sweep": 2, "single": 3}
         runs.sort(key=lambda run: rank.get(run[0].split("-")[0], 2))
