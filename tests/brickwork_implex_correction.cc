@@ -101,19 +101,8 @@ namespace
   std::vector<int>
   corrected_steps(const std::string &name)
   {
-    std::ifstream    in("results/" + name + "/log.txt");
-    std::string      line;
-    std::vector<int> steps;
-    bool             seen = false;
-    while (std::getline(in, line))
-      if (line.find("solved again with its updated") != std::string::npos)
-        seen = true;
-      else if (seen && line.rfind("Step ", 0) == 0)
-        {
-          steps.push_back(std::stoi(line.substr(5)));
-          seen = false;
-        }
-    return steps;
+    return steps_after("results/" + name + "/log.txt",
+                       "solved again with its updated");
   }
   /** The largest |stress - envelope| / f_t over the steps @p steps. */
   double

@@ -221,6 +221,28 @@ namespace brickwork_tests
         return std::stoi(line.substr(5));
     return -1;
   }
+  /**
+   * The numbers N of the lines `Step N ...' of a log that follow a line that
+   * contains @p text (several such lines before one step: that step once),
+   * in order.
+   */
+  inline std::vector<int>
+  steps_after(const std::string &log, const std::string &text)
+  {
+    std::ifstream    in(log);
+    std::string      line;
+    std::vector<int> steps;
+    bool             seen = false;
+    while (std::getline(in, line))
+      if (line.find(text) != std::string::npos)
+        seen = true;
+      else if (seen && line.rfind("Step ", 0) == 0)
+        {
+          steps.push_back(std::stoi(line.substr(5)));
+          seen = false;
+        }
+    return steps;
+  }
   /** The entries of the DataSet lines of a PVD file, in order. */
   inline std::vector<std::string>
   pvd_entries(const std::string &file)

@@ -53,29 +53,6 @@ namespace
         ++n;
     return n;
   }
-
-  /** For every step N of results/@p name/log.txt, whether the damage-error
-   * control redid it (an `IMPL-EX: step redone' line before `Step N'). */
-  std::vector<bool>
-  redone_steps(const std::string &name)
-  {
-    std::ifstream     in("results/" + name + "/log.txt");
-    std::string       line;
-    std::vector<bool> redone;
-    bool              pending = false;
-    while (std::getline(in, line))
-      if (line.find("IMPL-EX: step redone") != std::string::npos)
-        pending = true;
-      else if (line.rfind("Step ", 0) == 0)
-        {
-          const unsigned int n = std::stoi(line.substr(5));
-          if (redone.size() <= n)
-            redone.resize(n + 1, false);
-          redone[n] = pending;
-          pending   = false;
-        }
-    return redone;
-  }
 } // namespace
 
 int
@@ -99,12 +76,16 @@ main(int argc, char **argv)
 
   // (c) the step before the first redone unloading step accepted at the
   // floor, with two unloading steps of the same leg before it
-  const auto              rows   = curve("own");
-  const std::vector<bool> redone = redone_steps("own");
-  unsigned int            stop   = 0;
-  for (unsigned int n = 3; stop == 0 && n < rows.size() && n < redone.size();
-       ++n)
-    if (redone[n] && rows[n][9] == 1 && rows[n - 1][9] == 1 &&
+  const auto rows = curve("own");
+  // the steps that the damage-error control redid
+  const std::vector<int> redone =
+    steps_after("results/own/log.txt", "IMPL-EX: step redone");
+  const auto was_redone = [&](const int n) {
+    return std::find(redone.begin(), redone.end(), n) != redone.end();
+  };
+  unsigned int stop = 0;
+  for (unsigned int n = 3; stop == 0 && n < rows.size(); ++n)
+    if (was_redone(n) && rows[n][9] == 1 && rows[n - 1][9] == 1 &&
         rows[n - 2][9] == 1 && rows[n - 2][8] == rows[n][8] &&
         rows[n][4] > 1.2 * 0.1e6 &&
         std::abs(rows[n - 1][1] - rows[n][1] - half) < 1e-3 * half)
