@@ -205,23 +205,6 @@ namespace brickwork_tests
     return rows;
   }
   /**
-   * The number N of the first line `Step N ...' of a log after the first
-   * line that contains @p text; -1 if there is none.
-   */
-  inline int
-  first_step_after(const std::string &log, const std::string &text)
-  {
-    std::ifstream in(log);
-    std::string   line;
-    bool          seen = false;
-    while (std::getline(in, line))
-      if (!seen)
-        seen = line.find(text) != std::string::npos;
-      else if (line.rfind("Step ", 0) == 0)
-        return std::stoi(line.substr(5));
-    return -1;
-  }
-  /**
    * The numbers N of the lines `Step N ...' of a log that follow a line that
    * contains @p text (several such lines before one step: that step once),
    * in order.
@@ -242,6 +225,16 @@ namespace brickwork_tests
           seen = false;
         }
     return steps;
+  }
+  /**
+   * The number N of the first line `Step N ...' of a log after the first
+   * line that contains @p text; -1 if there is none.
+   */
+  inline int
+  first_step_after(const std::string &log, const std::string &text)
+  {
+    const std::vector<int> steps = steps_after(log, text);
+    return steps.empty() ? -1 : steps.front();
   }
   /** The entries of the DataSet lines of a PVD file, in order. */
   inline std::vector<std::string>
