@@ -193,6 +193,7 @@ namespace masonry
         {
           PagmoSettings settings;
           settings.create            = algorithm.create;
+          settings.algorithm         = algorithm.name;
           settings.population_size   = population_size;
           settings.generations       = generations;
           settings.seed              = seed;
@@ -244,9 +245,6 @@ namespace masonry
                   dealii::ExcMessage("more than " +
                                      std::to_string(max_pagmo_algorithms) +
                                      " pagmo algorithms registered"));
-      AssertThrow(algorithm.create != nullptr,
-                  dealii::ExcMessage("the pagmo algorithm '" + algorithm.name +
-                                     "' has no factory"));
       // the slots refer to the list by index: never reallocate it
       list.reserve(max_pagmo_algorithms);
       list.push_back(algorithm);

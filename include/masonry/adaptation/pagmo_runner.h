@@ -2,6 +2,20 @@
  * @file
  * The pagmo2 side of the optimisers, kept apart from deal.II headers (their
  * boost serialisation of std::tuple clashes with pagmo's s11n.hpp).
+ *
+ * pagmo lives in its own library, libmasonry_pagmo.so (run_pagmo()'s
+ * island loop and the factories of the built-in algorithms), loaded by
+ * run_pagmo() on its first call: a run without adaptation, `--validate' and
+ * `--print-parameters' never load pagmo (its loading and its static tables
+ * cost about 11 ms and 33 MiB a process). libmasonry holds the algorithms'
+ * names, descriptions and entries, so the parameters are the same either
+ * way. A built-in algorithm's file in source/adaptation/pagmo/ is compiled
+ * into both libraries: into libmasonry without MASONRY_PAGMO_FACTORIES (its
+ * MASONRY_REGISTER_PAGMO_ALGORITHM with a null factory, no pagmo header),
+ * into libmasonry_pagmo.so with it (its factory, registered by name with
+ * MASONRY_REGISTER_PAGMO_FACTORY). A plugin of a user's shared library
+ * includes pagmo, links Pagmo::pagmo itself and passes its factory to
+ * MASONRY_REGISTER_PAGMO_ALGORITHM directly.
  */
 #ifndef masonry_adaptation_pagmo_runner_h
 #define masonry_adaptation_pagmo_runner_h
@@ -56,8 +70,13 @@ namespace masonry
     /** Settings of a pagmo run. */
     struct PagmoSettings
     {
-      /** Builds the algorithm (one generation per evolve() call). */
+      /**
+       * Builds the algorithm (one generation per evolve() call); nullptr:
+       * the factory registered under @p algorithm in libmasonry_pagmo.so.
+       */
       PagmoFactory create = nullptr;
+      /** The algorithm's plugin name. */
+      std::string algorithm;
       /** Population size. */
       unsigned int population_size;
       /** Largest number of generations. */
@@ -100,7 +119,11 @@ namespace masonry
       std::string description;
       /** Its own entries, declared in `subsection Adaptation/<Name>`. */
       std::vector<PagmoEntry> entries;
-      /** Builds the algorithm (settings.parameters follow entries). */
+      /**
+       * Builds the algorithm (settings.parameters follow entries); nullptr
+       * for the built-in algorithms, whose factories are registered by name
+       * in libmasonry_pagmo.so (MASONRY_REGISTER_PAGMO_FACTORY).
+       */
       PagmoFactory create;
     };
 
@@ -110,6 +133,14 @@ namespace masonry
      */
     bool
     register_pagmo_algorithm(const PagmoAlgorithm &algorithm);
+
+    /**
+     * Register the factory of the built-in algorithm @p name (defined in
+     * libmasonry_pagmo.so, called by MASONRY_REGISTER_PAGMO_FACTORY in the
+     * algorithm's file compiled with MASONRY_PAGMO_FACTORIES). Returns true.
+     */
+    bool
+    register_pagmo_factory(const char *name, PagmoFactory create);
 
     /** A fitness function (the quantity maximised). */
     using Fitness = std::function<double(const std::vector<double> &)>;
@@ -123,6 +154,9 @@ namespace masonry
      * thread-safe with themselves); after every generation the best mesh
      * of all islands of all ranks migrates to every island. A fixed seed
      * gives the same result for the same numbers of ranks and threads.
+     * The first call loads libmasonry_pagmo.so (from the directory of
+     * libmasonry.so, else the loader's path); an error names the library
+     * and the cause.
      */
     Result
     run_pagmo(const MPI_Comm                                 comm,
@@ -139,7 +173,8 @@ namespace masonry
 /**
  * Register a pagmo algorithm as an `Optimiser` plugin: the arguments
  * initialise a masonry::adaptation::PagmoAlgorithm (name, description,
- * entries, factory). Use once, at namespace scope, in the algorithm's file.
+ * entries, factory; the factory nullptr for a built-in algorithm). Use
+ * once, at namespace scope, in the algorithm's file.
  */
 #define MASONRY_REGISTER_PAGMO_ALGORITHM(...)                              \
   namespace                                                                \
@@ -147,6 +182,18 @@ namespace masonry
     const bool MASONRY_PAGMO_CONCAT(masonry_pagmo_registered_, __LINE__) = \
       masonry::adaptation::register_pagmo_algorithm(                       \
         masonry::adaptation::PagmoAlgorithm{__VA_ARGS__});                 \
+  }
+
+/**
+ * Register the factory of a built-in algorithm by its plugin name (in the
+ * part of its file compiled into libmasonry_pagmo.so). Use once, at
+ * namespace scope.
+ */
+#define MASONRY_REGISTER_PAGMO_FACTORY(name, factory)                   \
+  namespace                                                             \
+  {                                                                     \
+    const bool MASONRY_PAGMO_CONCAT(masonry_pagmo_factory_, __LINE__) = \
+      masonry::adaptation::register_pagmo_factory(name, factory);       \
   }
 
 #endif

@@ -1,13 +1,15 @@
 /**
  * @file
  * The `Optimiser` plugin of pagmo's covariance matrix adaptation evolution
- * strategy (cmaes). pagmo only: no deal.II header may be included here (see
- * pagmo_runner.h).
+ * strategy (cmaes). Compiled twice (see pagmo_runner.h): the plugin
+ * into libmasonry, the factory into libmasonry_pagmo.so.
  */
 #include <masonry/adaptation/pagmo_runner.h>
 
-#include <pagmo/algorithm.hpp>
-#include <pagmo/algorithms/cmaes.hpp>
+#ifdef MASONRY_PAGMO_FACTORIES
+// the factory, in libmasonry_pagmo.so (pagmo; no deal.II header)
+#  include <pagmo/algorithm.hpp>
+#  include <pagmo/algorithms/cmaes.hpp>
 
 namespace
 {
@@ -19,6 +21,10 @@ namespace
   }
 } // namespace
 
+MASONRY_REGISTER_PAGMO_FACTORY("cmaes", &create)
+
+#else
+// the plugin (name, description, entries), in libmasonry: no pagmo header
 MASONRY_REGISTER_PAGMO_ALGORITHM(
   "cmaes",
   "pagmo's covariance matrix adaptation evolution strategy (cmaes, bounds "
@@ -29,4 +35,6 @@ MASONRY_REGISTER_PAGMO_ALGORITHM(
     1,
     "Initial step size σ₀ in gene space (dimensionless, genes lie in [0, "
     "1])."}},
-  &create)
+  nullptr)
+
+#endif

@@ -1,12 +1,15 @@
 /**
  * @file
- * The `Optimiser` plugin of pagmo's differential evolution (de). pagmo only: no
- * deal.II header may be included here (see pagmo_runner.h).
+ * The `Optimiser` plugin of pagmo's differential evolution (de). Compiled twice
+ * (see pagmo_runner.h): the plugin into libmasonry, the factory into
+ * libmasonry_pagmo.so.
  */
 #include <masonry/adaptation/pagmo_runner.h>
 
-#include <pagmo/algorithm.hpp>
-#include <pagmo/algorithms/de.hpp>
+#ifdef MASONRY_PAGMO_FACTORIES
+// the factory, in libmasonry_pagmo.so (pagmo; no deal.II header)
+#  include <pagmo/algorithm.hpp>
+#  include <pagmo/algorithms/de.hpp>
 
 namespace
 {
@@ -18,6 +21,10 @@ namespace
   }
 } // namespace
 
+MASONRY_REGISTER_PAGMO_FACTORY("differential evolution", &create)
+
+#else
+// the plugin (name, description, entries), in libmasonry: no pagmo header
 MASONRY_REGISTER_PAGMO_ALGORITHM(
   "differential evolution",
   "pagmo's differential evolution (de, variant rand/1/exp).",
@@ -27,4 +34,6 @@ MASONRY_REGISTER_PAGMO_ALGORITHM(
     0,
     1,
     "Crossover probability CR (dimensionless)."}},
-  &create)
+  nullptr)
+
+#endif

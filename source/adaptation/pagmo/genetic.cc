@@ -1,12 +1,15 @@
 /**
  * @file
- * The `Optimiser` plugin of pagmo's simple genetic algorithm (sga). pagmo only:
- * no deal.II header may be included here (see pagmo_runner.h).
+ * The `Optimiser` plugin of pagmo's simple genetic algorithm (sga). Compiled
+ * twice (see pagmo_runner.h): the plugin into libmasonry, the factory into
+ * libmasonry_pagmo.so.
  */
 #include <masonry/adaptation/pagmo_runner.h>
 
-#include <pagmo/algorithm.hpp>
-#include <pagmo/algorithms/sga.hpp>
+#ifdef MASONRY_PAGMO_FACTORIES
+// the factory, in libmasonry_pagmo.so (pagmo; no deal.II header)
+#  include <pagmo/algorithm.hpp>
+#  include <pagmo/algorithms/sga.hpp>
 
 namespace
 {
@@ -26,6 +29,10 @@ namespace
   }
 } // namespace
 
+MASONRY_REGISTER_PAGMO_FACTORY("genetic", &create)
+
+#else
+// the plugin (name, description, entries), in libmasonry: no pagmo header
 MASONRY_REGISTER_PAGMO_ALGORITHM(
   "genetic",
   "pagmo's simple genetic algorithm (sga: exponential crossover, "
@@ -40,4 +47,6 @@ MASONRY_REGISTER_PAGMO_ALGORITHM(
     0,
     1,
     "Probability that a gene mutates (dimensionless; polynomial mutation)."}},
-  &create)
+  nullptr)
+
+#endif

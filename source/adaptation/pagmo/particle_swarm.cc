@@ -1,12 +1,15 @@
 /**
  * @file
- * The `Optimiser` plugin of pagmo's particle swarm optimisation (pso). pagmo
- * only: no deal.II header may be included here (see pagmo_runner.h).
+ * The `Optimiser` plugin of pagmo's particle swarm optimisation (pso). Compiled
+ * twice (see pagmo_runner.h): the plugin into libmasonry, the factory into
+ * libmasonry_pagmo.so.
  */
 #include <masonry/adaptation/pagmo_runner.h>
 
-#include <pagmo/algorithm.hpp>
-#include <pagmo/algorithms/pso.hpp>
+#ifdef MASONRY_PAGMO_FACTORIES
+// the factory, in libmasonry_pagmo.so (pagmo; no deal.II header)
+#  include <pagmo/algorithm.hpp>
+#  include <pagmo/algorithms/pso.hpp>
 
 namespace
 {
@@ -18,8 +21,14 @@ namespace
   }
 } // namespace
 
+MASONRY_REGISTER_PAGMO_FACTORY("particle swarm", &create)
+
+#else
+// the plugin (name, description, entries), in libmasonry: no pagmo header
 MASONRY_REGISTER_PAGMO_ALGORITHM(
   "particle swarm",
   "pagmo's particle swarm optimisation (pso, constriction variant).",
   {{"Inertia", "0.7298", 0, 1, "Inertia weight ω (dimensionless)."}},
-  &create)
+  nullptr)
+
+#endif
