@@ -307,6 +307,9 @@ def sweep_header_inputs(prm):
     for m in re.finditer(r"\b(E_b|E_m|f_bt|f_mt|G_bt|G_bc) = ([0-9.e+-]+)",
                          head):
         out.setdefault(m.group(1), float(m.group(2)))
+    m = re.search(r"\bmesh (\d+x\d+x\d+)", head)
+    if m:
+        out["mesh"] = m.group(1)
     return out
 
 
@@ -331,6 +334,7 @@ def load_sweep(directory, f_b, f_m):
     E_b = inputs.get("E_b", 500 * f_b * 1e6)
     E_m = inputs.get("E_m", 200 * f_m * 1e6)
     r = {"name": name, "f_b": f_b, "f_m": f_m, "status": j.get("status", "?"),
+         "mesh": inputs.get("mesh"),
          "E_m_GPa": E_m / 1e9, "E_b_GPa": E_b / 1e9,
          "E_series_GPa": series_modulus(E_b, E_m) / 1e9,
          "cpu_seconds": read_cpu(directory, name),
@@ -363,7 +367,7 @@ def load_sweep(directory, f_b, f_m):
     return r
 
 
-SWEEP_KEYS = ["name", "f_b", "f_m", "E_b_GPa", "E_m_GPa", "peak_MPa", "strain_at_peak",
+SWEEP_KEYS = ["name", "mesh", "f_b", "f_m", "E_b_GPa", "E_m_GPa", "peak_MPa", "strain_at_peak",
               "peak_reached",
               "kaushik_MPa", "ec6_fk_MPa", "ec6_mean_MPa", "band_low_MPa",
               "band_high_MPa", "in_band", "E0_GPa", "E_series_GPa",
@@ -397,6 +401,10 @@ def sweep_section(directory, sweep):
         for r in sweep:
             w.writerow(["" if r.get(k) is None else r.get(k) for k in keys])
     f = (lambda v, fmt="{:.2f}": "" if v is None else fmt.format(v))
+    meshes = sorted({r["mesh"] for r in sweep if r.get("mesh")})
+    mesh_text = (f"Mesh: {', '.join(meshes)} cells per unit + joint (length "
+                 "x width x height; study.py --sweep-mesh). " if meshes
+                 else "")
     lines = [
         "## Single-leaf sweep",
         "",
@@ -410,7 +418,7 @@ def sweep_section(directory, sweep):
         "softening with the crushing energy 15 + 0.43 f_m - 0.0036 f_m² "
         "N/mm; the values of each pair: the header of "
         "its sweep-*.prm; sources: doc/references-brickwork-strength.md). "
-        "Target band: "
+        f"{mesh_text}Target band: "
         f"{BAND[0]} × Kaushik to {BAND[1]} × EC6 mean; modulus within "
         f"±{100 * MODULUS_TOL:.0f} % of 550 f'_m. E_series = "
         "(h_b + h_m)/(h_b/E_b + h_m/E_m), the unit and mortar moduli in "

@@ -51,6 +51,13 @@ SWEEP_QUICK = dict(SWEEP, **{"Elements along the length": "2",
 SWEEP_QUICK_STEP = 2e-4
 # the detailed sweep stops after this many times the nominal number of steps
 SWEEP_STEP_CAP = 3
+# the detailed sweep's mesh, cells per unit + joint along its length, width
+# and height (--sweep-mesh): finer than the example's 4x2x2, whose peak lies
+# 2.3 % above 6x3x3 and 5.0 % above 8x4x4 (single leaf, f_b = 20, f_m = 5
+# MPa; contrib/benchmarks/wallette_convergence/results-2026-11-28.md and
+# -11-25.md): the sweep compares strengths with a band, so it takes the
+# finer mesh (CPU about 2.8 x the example mesh's, results-2026-11-29)
+SWEEP_MESH = "6x3x3"
 # the detailed model's sweep and the mortar and bond of a specimen turned
 # detailed come from the single-leaf monotonic example
 DETAILED_BASE = os.path.join(root, "prm", "examples",
@@ -176,11 +183,20 @@ def get_in(text, path, name):
     return None
 
 
-def make_sweep_prm(f_b, f_m, directory, quick, model):
+def parse_mesh(text):
+    """`LxWxH' (cells per unit + joint) as three positive integers."""
+    parts = text.split("x")
+    if len(parts) != 3 or not all(p.isdigit() and int(p) > 0 for p in parts):
+        raise SystemExit(f"study: error: --sweep-mesh `{text}' is not LxWxH "
+                         "with three positive integers (e.g. 6x3x3)")
+    return [int(p) for p in parts]
+
+
+def make_sweep_prm(f_b, f_m, directory, quick, model, mesh=SWEEP_MESH):
     """The single-leaf wallette for one (f_b, f_m) pair (see the module
     documentation); returns (name, prm, out)."""
     if model == "detailed":
-        return make_detailed_sweep_prm(f_b, f_m, directory, quick)
+        return make_detailed_sweep_prm(f_b, f_m, directory, quick, mesh)
     source = os.path.join(root, "prm", "examples",
                           "wallette-single-cyclic.prm")
     text = open(source).read()
@@ -250,11 +266,12 @@ def make_sweep_prm(f_b, f_m, directory, quick, model):
     return name, prm, out
 
 
-def make_detailed_sweep_prm(f_b, f_m, directory, quick):
+def make_detailed_sweep_prm(f_b, f_m, directory, quick, mesh=SWEEP_MESH):
     """The sweep pair for the detailed model: the single-leaf monotonic
     example (DETAILED_BASE) with the unit and mortar inputs of
-    sweep_inputs(), run to sweep_target(), with only the curve tables
-    written (no VTU, no plots)."""
+    sweep_inputs(), on the mesh @p mesh (`LxWxH'; --quick: the coarsest),
+    run to sweep_target(), with only the curve tables written (no VTU, no
+    plots)."""
     source = DETAILED_BASE
     text = open(source).read()
     name = f"sweep-fb{f_b:g}-fm{f_m:g}"
@@ -274,10 +291,10 @@ def make_detailed_sweep_prm(f_b, f_m, directory, quick):
                 "Number of steps": str(n),
                 "Maximum steps": str(SWEEP_STEP_CAP * n),
                 "Output interval": "0", "Write VTU": "false"}
-    if quick:
-        settings.update({"Elements along the length": "2",
-                         "Elements along the width": "1",
-                         "Elements along the height": "1"})
+    cells = [2, 1, 1] if quick else parse_mesh(mesh)
+    settings.update({"Elements along the length": str(cells[0]),
+                     "Elements along the width": str(cells[1]),
+                     "Elements along the height": str(cells[2])})
     for key, value in settings.items():
         text, _ = set_in(text, ["Wallette"], key, value)
     text, _ = set_in(text, ["Postprocess", "Wallette"],
@@ -300,7 +317,8 @@ def make_detailed_sweep_prm(f_b, f_m, directory, quick):
         text, _ = set_in(text, mortar, key, f"{value:.6g}")
     inputs = ", ".join(f"{k} = {v:.4g}" for k, v in x.items())
     header = (f"# Study sweep pair {name}: {os.path.relpath(source, root)}, "
-              f"monotonic to strain {target:.4g}, model detailed"
+              f"monotonic to strain {target:.4g}, model detailed, mesh "
+              f"{'x'.join(map(str, cells))}"
               f"{' (--quick)' if quick else ''}, written by "
               f"contrib/study/run.\n# inputs (SI, sweep_inputs()): {inputs}\n")
     prm = os.path.join(directory, name + ".prm")
@@ -452,6 +470,7 @@ def main():
     p.add_argument("--part", default="specimens,sweep")
     p.add_argument("--model", default="detailed",
                    choices=("simplified", "detailed"))
+    p.add_argument("--sweep-mesh", default=SWEEP_MESH)
     p.add_argument("--report-only", action="store_true")
     p.add_argument("--no-setup", action="store_true")
     args = p.parse_args()
@@ -462,6 +481,7 @@ def main():
         if t not in THICKNESSES:
             raise SystemExit(f"study: error: unknown thickness `{t}' "
                              f"(one of {', '.join(THICKNESSES)})")
+    parse_mesh(args.sweep_mesh)
     seeds = [int(s) for s in args.seeds.split(",") if s]
     parts = [x for x in args.part.split(",") if x]
     for x in parts:
@@ -483,7 +503,8 @@ def main():
         runs += [make_prm(t, s, directory, args.quick, args.model)
                  for s in seeds for t in thicknesses]
     if "sweep" in parts:
-        runs += [make_sweep_prm(f_b, f_m, directory, args.quick, args.model)
+        runs += [make_sweep_prm(f_b, f_m, directory, args.quick, args.model,
+                                args.sweep_mesh)
                  for f_b in SWEEP_FB for f_m in SWEEP_FM]
     if args.jobs > 1:
         # the longest runs first (results-2026-11-29: a triple specimen
