@@ -56,7 +56,7 @@ SWEEP_STEP_CAP = 3
 # 2.3 % above 6x3x3 and 5.0 % above 8x4x4 (single leaf, f_b = 20, f_m = 5
 # MPa; contrib/benchmarks/wallette_convergence/results-2026-11-28.md and
 # -11-25.md): the sweep compares strengths with a band, so it takes the
-# finer mesh (CPU about 2.8 x the example mesh's, results-2026-11-29)
+# finer mesh (sweep CPU 3.3 x the example mesh's, results-2026-11-29b)
 SWEEP_MESH = "6x3x3"
 # the detailed model's sweep and the mortar and bond of a specimen turned
 # detailed come from the single-leaf monotonic example
