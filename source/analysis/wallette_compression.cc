@@ -367,10 +367,12 @@ namespace masonry
           "0",
           Double(0, 1),
           "The run ends when the specimen has collapsed: on a loading leg "
-          "the stress has fallen below this fraction of the peak stress of "
-          "the run, and by more than that from the largest stress of the "
-          "leg (a reloading from the unloading stress is not a collapse), "
-          "dimensionless, in [0, 1). Its status is `completed', its message "
+          "the stress has fallen below this fraction r of the peak stress "
+          "of the run, and it lies more than r times the peak below the "
+          "largest stress of the leg (a reloading from the unloading stress "
+          "is not a collapse), dimensionless, in [0, 1). In a monotonic run "
+          "that is a stress below min(r, 1 - r) times the peak, so 0.5 ends "
+          "it at half the peak. Its status is `completed', its message "
           "(log.txt, summary.json) says where, and the last state is written; "
           "the rest of the protocol is not run. 0: never (the run goes on "
           "to the last amplitude whatever the specimen still carries).");
