@@ -11,6 +11,8 @@
  *   `Crossover = always` (an independent solve: barrier, crossover and the
  *   simplex's clean-up) to 1e-8 relative, for `automatic` and for
  *   `barrier`.
+ * - With the default settings (no `Crossover` entry) the settlement run
+ *   keeps the interior point: `never` is the default.
  * - The statuses stay the simplex's: the same arch at t/R = 0.06 without
  *   settlement and cohesionless joints (well below the minimum thickness)
  *   is a `mechanism`; two blocks with bonded supports, one settling, cannot
@@ -83,6 +85,13 @@ main(int argc, char **argv)
           arch_prm(5, 1, 16, "0; 0; -0.01") + mohr_coulomb,
           "objective");
   compare("limit load", "limit", arch_limit_load_prm(), "load_multiplier");
+  // `never' is the default (since 2026-11-29): a run without the entry
+  // keeps the interior point
+  const masonry::Json by_default =
+    run("settlement_default", arch_prm(5, 1, 16, "0; 0; -0.01") + mohr_coulomb);
+  check(by_default.at("status").as_string() == "optimal" &&
+          kept_interior(by_default),
+        "settlement, default settings: the interior point is kept");
 
   for (const std::string c : {"always", "never"})
     {
