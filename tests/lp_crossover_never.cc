@@ -80,15 +80,13 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  compare("settlement",
-          "settlement",
-          arch_prm(5, 1, 16, "0; 0; -0.01") + mohr_coulomb,
-          "objective");
+  const std::string                        settlement =
+    arch_prm(5, 1, 16, "0; 0; -0.01") + mohr_coulomb;
+  compare("settlement", "settlement", settlement, "objective");
   compare("limit load", "limit", arch_limit_load_prm(), "load_multiplier");
   // `never' is the default (since 2026-11-29): a run without the entry
   // keeps the interior point
-  const masonry::Json by_default =
-    run("settlement_default", arch_prm(5, 1, 16, "0; 0; -0.01") + mohr_coulomb);
+  const masonry::Json by_default = run("settlement_default", settlement);
   check(by_default.at("status").as_string() == "optimal" &&
           kept_interior(by_default),
         "settlement, default settings: the interior point is kept");
