@@ -89,4 +89,8 @@ MASONRY_REGISTER_RIGID_BLOCK_POSTPROCESSOR(
   "thickness): per interface the centre of pressure of the normal contact "
   "forces (the line of thrust of an arch, m), the normal and shear "
   "resultants (N) and the eccentricity across the thickness (m and "
-  "relative to t/2).")
+  "relative to t/2). Computed from the contact forces of `interface "
+  "forces', so not unique where the vault is statically indeterminate at "
+  "collapse (the default interior point and `Crossover = always' differ); "
+  "tension within a joint's cut-off can put the centre of pressure outside "
+  "the section (e/(t/2) > 1).")
