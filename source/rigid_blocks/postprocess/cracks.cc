@@ -13,7 +13,7 @@ namespace masonry
     {
       /**
        * Summary entries `n_cracks`, `n_hinges` and `cracks` (every interface
-       * whose jump exceeds the round-off tolerance, classified as hinge,
+       * whose jump exceeds Result::tolerance(), classified as hinge,
        * separation or slip) and one screen line.
        */
       class Cracks : public Interface
@@ -91,7 +91,9 @@ MASONRY_REGISTER_RIGID_BLOCK_POSTPROCESSOR(
   masonry::rigid_blocks::postprocess::Cracks,
   "cracks",
   "Summary entries `n_cracks', `n_hinges' and `cracks': every interface "
-  "that opens or rotates (a jump above 1e-6 of the largest displacement), "
+  "that opens or rotates (a jump above 1e-4 of the largest displacement or "
+  "support motion: below that the jumps of an interior point of the LP, "
+  "not cracks), "
   "with its position (m), type (`hinge': opens at one face and stays "
   "closed at the other, `separation': opens everywhere, `slip': slides "
   "closed), `max_opening' (m) and `relative_rotation' (rad); and the "

@@ -151,14 +151,17 @@ namespace masonry
         }
 
         /**
-         * Jumps at or below this length (m) are round-off of the LP, not
-         * cracks: 1e-6 of the larger of max_displacement() and
-         * max_support_motion().
+         * Jumps at or below this length (m) are not cracks: 1e-4 of the
+         * larger of max_displacement() and max_support_motion(). A vertex of
+         * the LP has round-off of about 1e-12 there; an interior point
+         * (`Crossover = never`) up to 1.8e-6 (an arch of 400 blocks with no
+         * tension no sliding joints, whose hinges open 0.065 to 0.14 of the
+         * settlement; tests/lp_no_tension_interior).
          */
         double
         tolerance() const
         {
-          return 1e-6 * std::max(largest_displacement, largest_support_motion);
+          return 1e-4 * std::max(largest_displacement, largest_support_motion);
         }
 
         /** Per interface the largest normal opening of its points, m. */
