@@ -21,6 +21,7 @@
 
 #include "clp_barrier.h"
 #include "clp_dual.h"
+#include "clp_parameters.h"
 
 namespace masonry
 {
@@ -129,6 +130,8 @@ namespace masonry
       {
         std::vector<double> x, y;
         PairCheck           check;
+        /** What ran when the point failed the check. */
+        std::string then = "crossover";
       };
 
       /** Clp's basis (status of every column, then of every row). */
@@ -259,76 +262,7 @@ namespace masonry
     void
     Clp::declare_parameters(dealii::ParameterHandler &prm)
     {
-      prm.declare_entry(
-        "Algorithm",
-        "automatic",
-        dealii::Patterns::Selection(
-          "automatic|dual simplex|primal simplex|barrier"),
-        "Algorithm of Clp: `dual simplex', `primal simplex', `barrier' "
-        "(primal-dual interior point, kept as it is or followed by the "
-        "crossover to a vertex: see `Crossover'), or `automatic': Clp solves "
-        "the explicit dual of the LP (for a mechanism LP, the static problem "
-        "in the contact forces) without presolve, by the barrier when the LP "
-        "has at least as many columns as rows (Mohr-Coulomb joints: the "
-        "plastic multipliers), else (no tension no sliding) by the primal "
-        "simplex without scaling (from 2000 rows of the dual LP up, from a "
-        "basis of its free columns, the tangential forces). After the barrier, "
-        "with `Crossover = never' (the default), its interior point is mapped "
-        "back and checked (see there); otherwise, or if that check fails, and "
-        "after the primal simplex, the vertex is mapped back and confirmed "
-        "with the dual simplex (the primal simplex if the mapped basis is not "
-        "dual feasible; both without scaling, after a pass of the primal "
-        "simplex on the unscaled dual LP, when the barrier's vertex is optimal "
-        "only for Clp's scaled dual LP; the LP is solved directly if this "
-        "clean-up does not end within 1000 + rows / 20 iterations). A dual LP "
-        "that the simplex proves infeasible (after the barrier: the primal "
-        "simplex from the barrier's last point) makes the LP unbounded or "
-        "infeasible (unbounded if x = 0 satisfies every bound, else decided by "
-        "a feasibility solve); anything else not proven optimal is solved "
-        "directly by the same method. The choice comes from the measurements "
-        "in contrib/benchmarks/lp_solvers. Unitless choice.");
-      prm.declare_entry(
-        "Crossover",
-        "never",
-        dealii::Patterns::Selection("always|never"),
-        "Whether Clp's barrier (`Algorithm = barrier', and the Mohr-Coulomb "
-        "route of `automatic') is followed by the crossover to a vertex "
-        "(`always') or, with `never' (the default), stops at its interior "
-        "point when Clp's barrier ends optimal and the point checks out on the "
-        "LP itself: the LP's primal values (for `automatic', read off the "
-        "duals of the explicit dual LP) violate no bound, the duals no sign "
-        "condition, by more than `Interior point tolerance' (in the LP's "
-        "scaled units), and the pair's duality gap is at most that tolerance "
-        "relative to the objective; otherwise the barrier runs again and the "
-        "crossover follows, as with `always'. With `never' the solution is not "
-        "a vertex (velocities and contact forces are a centre of the optimal "
-        "face; where several mechanisms or force states are optimal, `always' "
-        "gives one extreme one), the optimum is exact to that tolerance "
-        "(within 6.4e-9 of the vertex's on every Mohr-Coulomb example and the "
-        "Bothwell settlement up to 24 x 32 blocks per half, in 0.22 to 0.70 of "
-        "the solve time: contrib/benchmarks/lp_solvers/results-2026-11-29.md), "
-        "`Algorithm = barrier' runs without presolve, and no basis is kept, so "
-        "warm-started callers (minimum thickness) always cross over; the "
-        "genetic algorithm's cold evaluations do not. Unitless choice.");
-      prm.declare_entry(
-        "Interior point tolerance",
-        "1e-6",
-        dealii::Patterns::Double(1e-12, 1e-3),
-        "With `Crossover = never': the largest relative duality gap, bound "
-        "violation and dual sign violation of the barrier's point that is kept "
-        "as the optimum (else the crossover runs). The pair's contact forces "
-        "are less accurate than its velocities: from 12 x 16 Bothwell blocks "
-        "per half up its gap is 9e-8 to 2.7e-7 while the objective is within "
-        "6.1e-9 of the vertex's "
-        "(contrib/benchmarks/lp_solvers/results-2026-11-28.md). "
-        "Dimensionless.");
-      prm.declare_entry("Presolve",
-                        "true",
-                        dealii::Patterns::Bool(),
-                        "Whether Clp simplifies the problem before solving "
-                        "it (removing fixed variables, singleton rows, ...). "
-                        "An infeasible or unbounded problem is always "
-                        "confirmed without presolve. Unitless flag.");
+      declare_clp_parameters(prm);
     }
 
     void
@@ -440,16 +374,37 @@ namespace masonry
           // (contrib/benchmarks/lp_solvers/results-2026-11-25c.md)
           if (method == "primal simplex")
             solved.scaling(0);
+          // `Crossover = never': the interior point if it checks out on
+          // the LP itself
+          const auto keep = [&](const ClpSimplex &point) {
+            interior_from_dual(model, point, reduced, interior->x, interior->y);
+            interior->check = check_pair(lp, interior->x, interior->y);
+            return interior->check.within(interior_tolerance);
+          };
+          if (method == "primal simplex" && interior &&
+              dual->numberRows() >= 2000 && !has_dense_column(*dual))
+            {
+              // no tension no sliding: first the barrier, no crossover, on
+              // the dual with its unbounded forces boxed at the total load
+              // (Bothwell 12 x 16 blocks per half: 18 iterations against
+              // 3357 pivots), with Clp's stopping tolerance 1e-8 (1e-9 to
+              // 1e-12 went on past the barrier's accuracy and ended up to
+              // 0.02 from the optimum); smaller LPs get the vertex, which
+              // costs little there, and so do LPs with a dense column (a
+              // limit load's multiplier: its A D A^T is dense, 2 x slower
+              // at 24 x 32) (contrib/benchmarks/lp_solvers/
+              // results-2026-11-29b.md)
+              const auto boxed = boxed_copy(*dual, 1.);
+              const bool kept =
+                barrier_with_crossover(*boxed, keep, false, 1e-8);
+              iterations += boxed->numberIterations();
+              if (kept)
+                return DualRoute::interior;
+              interior->then = "primal simplex";
+            }
           if (method == "barrier" && interior)
             {
-              // `Crossover = never': the interior point if it checks out
-              // on the LP itself, else the crossover as below
-              const auto keep = [&](const ClpSimplex &point) {
-                interior_from_dual(
-                  model, point, reduced, interior->x, interior->y);
-                interior->check = check_pair(lp, interior->x, interior->y);
-                return interior->check.within(interior_tolerance);
-              };
+              // else the crossover as below
               const bool kept = barrier_with_crossover(solved, keep);
               iterations += solved.numberIterations();
               if (kept)
@@ -735,7 +690,8 @@ namespace masonry
           solution.message   = "Clp: optimal";
           if (!interior.x.empty())
             solution.message += " (the barrier's point failed the check, " +
-                                interior.check.describe() + ": crossover)";
+                                interior.check.describe() + ": " +
+                                interior.then + ")";
           if (basis_out)
             {
               basis_out->n_columns = n;

@@ -411,7 +411,9 @@ namespace masonry
     bool
     barrier_with_crossover(
       ClpSimplex                                    &model,
-      const std::function<bool(const ClpSimplex &)> &accept)
+      const std::function<bool(const ClpSimplex &)> &accept,
+      const bool                                     cross_if_rejected,
+      const double                                   accept_tolerance)
     {
       // ClpSimplex::initialSolve(), ClpSolve::useBarrier, presolve off,
       // special options 0 (ClpSolve.cpp of Clp 1.17), with ReusedCholesky
@@ -434,7 +436,7 @@ namespace masonry
         // by less than the dual tolerance (absolute: 1e-7, 1e-6 of a
         // mechanism LP's scaled optimum); for an interior point that is
         // kept, by less than this
-        barrier.setDualTolerance(1e-12);
+        barrier.setDualTolerance(accept_tolerance);
       barrier.primalDual();
       barrier.setDualTolerance(saveDualTolerance);
       const int    maxIts        = barrier.maximumBarrierIterations();
@@ -455,6 +457,11 @@ namespace masonry
             {
               model.setNumberIterations(first);
               return true;
+            }
+          if (!cross_if_rejected)
+            {
+              model.setNumberIterations(first);
+              return false;
             }
           // else the barrier with crossover as without @p accept (from
           // the barrier's point of the tighter tolerance, the crossover

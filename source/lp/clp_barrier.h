@@ -32,7 +32,8 @@ namespace masonry
      * is left out (it had not ended after 13 CPU minutes on a 24 x 32 Bothwell
      * LP that the primal passes finish in about 46 s).
      *
-     * If @p accept is given, the barrier runs with a dual tolerance of 1e-12
+     * If @p accept is given, the barrier runs with a dual tolerance of
+     * @p accept_tolerance
      * (Clp stops when its primal and dual objectives differ by less than
      * the dual tolerance); if it ends optimal (by Clp's criteria) @p accept
      * is called with @p model holding the barrier's interior
@@ -41,12 +42,15 @@ namespace masonry
      * (@p model then has no basis and no optimal status). Otherwise the
      * barrier runs again as without @p accept, followed by the crossover
      * (the same result as without @p accept), and this function returns
-     * false.
+     * false; with @p cross_if_rejected false it returns false at once
+     * (@p model then holds the barrier's last point, with no basis).
      */
     bool
     barrier_with_crossover(
       ClpSimplex                                    &model,
-      const std::function<bool(const ClpSimplex &)> &accept = nullptr);
+      const std::function<bool(const ClpSimplex &)> &accept = nullptr,
+      bool                                           cross_if_rejected = true,
+      double                                         accept_tolerance  = 1e-12);
   } // namespace lp
 } // namespace masonry
 

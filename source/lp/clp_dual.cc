@@ -204,8 +204,10 @@ namespace masonry
     PairCheck::relative_gap() const
     {
       return std::abs(dual_objective - primal_objective) /
-             std::max(
-               {std::abs(primal_objective), std::abs(dual_objective), 1e-6});
+             std::max({std::abs(primal_objective),
+                       std::abs(dual_objective),
+                       1e-2 * work_scale,
+                       1e-6});
     }
 
     bool
@@ -268,6 +270,17 @@ namespace masonry
           add(d[j], lp.column_lower()[j], lp.column_upper()[j]);
         }
       c.primal_objective = lp.objective_value(x);
+      // |c|_1 times the largest finite bound
+      double largest = 0;
+      for (const auto *b : {&lp.row_lower(),
+                            &lp.row_upper(),
+                            &lp.column_lower(),
+                            &lp.column_upper()})
+        for (const double v : *b)
+          if (std::isfinite(v))
+            largest = std::max(largest, std::abs(v));
+      for (const double cj : lp.objective())
+        c.work_scale += std::abs(cj) * largest;
       return c;
     }
 
@@ -293,6 +306,39 @@ namespace masonry
           // a free row's slack stays basic, as in Clp's slack basis
           model.setRowStatus(i, s);
         }
+    }
+
+    std::unique_ptr<ClpSimplex>
+    boxed_copy(const ClpSimplex &dual, const double factor)
+    {
+      constexpr double big   = 1e27; // Clp's SMALL_INFINITY
+      double           scale = 0;
+      for (int i = 0; i < dual.numberRows(); ++i)
+        {
+          const double lo = dual.rowLower()[i], up = dual.rowUpper()[i];
+          scale += std::max(lo > -big ? std::abs(lo) : 0.,
+                            up < big ? std::abs(up) : 0.);
+        }
+      const double bound = factor * (scale > 0 ? scale : 1.);
+      auto         boxed = std::make_unique<ClpSimplex>(dual);
+      for (int j = 0; j < boxed->numberColumns(); ++j)
+        {
+          if (boxed->columnLower()[j] < -big)
+            boxed->setColumnLower(j, -bound);
+          if (boxed->columnUpper()[j] > big)
+            boxed->setColumnUpper(j, bound);
+        }
+      return boxed;
+    }
+
+    bool
+    has_dense_column(const ClpSimplex &model)
+    {
+      const int *length = model.matrix()->getVectorLengths();
+      for (int j = 0; j < model.numberColumns(); ++j)
+        if (length[j] > 100)
+          return true;
+      return false;
     }
   } // namespace lp
 } // namespace masonry

@@ -98,8 +98,16 @@ namespace masonry
        */
       double dual_objective = 0;
       /**
-       * |dual_objective - primal_objective| over the larger of their
-       * absolute values (at least 1e-6).
+       * The LP's own scale of its objective: the 1-norm of the objective
+       * times the largest finite bound of a row or column (in a mechanism
+       * LP, the loads' work at the largest prescribed velocity).
+       */
+      double work_scale = 0;
+      /**
+       * |dual_objective - primal_objective| over the largest of their
+       * absolute values and 1 % of work_scale (at least 1e-6): an optimum
+       * of 0 (a settlement that moves no block) is judged on the LP's own
+       * scale.
        */
       double
       relative_gap() const;
@@ -128,6 +136,29 @@ namespace masonry
      */
     void
     free_columns_basic(ClpSimplex &model);
+
+    /**
+     * A copy of the dual LP @p dual whose column bounds that are infinite
+     * are @p factor times the 1-norm of its right-hand side instead (the
+     * LP's objective: in a mechanism LP the loads, so a contact force may
+     * reach @p factor times the total load). The force set of a mechanism
+     * LP with joints of unbounded strength (no tension no sliding) is
+     * unbounded (self-stress within an interface), so that the barrier's
+     * iterates grow without end; on the boxed copy they converge. An
+     * interior point of the copy whose mapped pair passes check_pair() on
+     * the LP is optimal for the LP itself: the boxes only allow the LP's
+     * rows to be violated, and the check would see that.
+     */
+    std::unique_ptr<ClpSimplex>
+    boxed_copy(const ClpSimplex &dual, double factor);
+
+    /**
+     * Whether a column of @p model has more than 100 entries (a contact
+     * force of a mechanism LP's dual has at most 12; the load multiplier of
+     * a limit load LP one per velocity).
+     */
+    bool
+    has_dense_column(const ClpSimplex &model);
   } // namespace lp
 } // namespace masonry
 

@@ -1,0 +1,129 @@
+/**
+ * The no-tension route of `automatic` with `Crossover = never` (the
+ * default): from 2000 rows of the explicit dual LP up, Clp's barrier solves
+ * the dual with its unbounded contact forces bounded by the total load, and
+ * its interior point is kept when it checks out on the LP itself.
+ *
+ * - A semicircular arch (mean radius 5 m, thickness 1 m, 200 blocks per
+ *   half: 2400 rows of the dual LP) with no tension no sliding joints under
+ *   a settlement of one springing: the run keeps the interior point, its
+ *   optimum equals the vertex of `Crossover = always` (an independent solve:
+ *   the primal simplex on the dual, then the clean-up) to 1e-8 relative, and
+ *   it finds the same cracks and hinges.
+ * - The Bothwell vertical settlement example (prm/examples, 12 x 16 blocks
+ *   per half: 2304 rows) with no tension no sliding joints: no block moves
+ *   at the vertex (its optimum is 0: the settling support separates), and
+ *   the interior point's optimum is within 1e-8 of the loads' work at the
+ *   settlement, W delta (the scale of the check; a settlement that moves a
+ *   block does work of that order), with the same cracks.
+ * - The horizontal settlement example with the same joints cannot follow
+ *   without sliding: `incompatible` with either setting. The boxed dual
+ *   then has its optimum at the bound, its point fails the check on the LP,
+ *   and the primal simplex decides.
+ */
+#include <deal.II/base/mpi.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "vault_tests.h"
+
+using namespace vault_tests;
+
+namespace
+{
+  const std::string no_tension = "  set Model = no tension no sliding\n";
+
+  std::string
+  crossover(const std::string &c)
+  {
+    return "subsection LP solver\n  subsection Clp\n    set Crossover = " + c +
+           "\n  end\nend\n";
+  }
+
+  bool
+  kept_interior(const masonry::Json &s)
+  {
+    return s.at("lp_message").as_string().find("no crossover") !=
+           std::string::npos;
+  }
+
+  /** Example @p name of prm/examples at 12 x 16 blocks per half with no
+   *  tension no sliding joints. */
+  std::string
+  example(const std::string &name)
+  {
+    std::ifstream in(std::string(MASONRY_SOURCE_DIR) + "/prm/examples/" + name +
+                     ".prm");
+    std::stringstream text;
+    text << in.rdbuf();
+    check(!text.str().empty(), name + " is read");
+    return text.str() +
+           "subsection Settlement\n  set Blocks along u = 12\n"
+           "  set Blocks along v = 16\n  set Write picture = false\nend\n"
+           "subsection Interface model\n" +
+           no_tension + "end\n";
+  }
+
+  /** Run @p prm with both settings; check the statuses, the interior point
+   *  and the cracks; return the two summaries (never, always). */
+  std::pair<masonry::Json, masonry::Json>
+  both(const std::string &name, const std::string &prm)
+  {
+    const masonry::Json never = run(name + "_never", prm + crossover("never"));
+    const masonry::Json always =
+      run(name + "_always", prm + crossover("always"));
+    const bool optimal = never.at("status").as_string() == "optimal" &&
+                         always.at("status").as_string() == "optimal";
+    check(optimal && kept_interior(never) && !kept_interior(always),
+          name + ": `never' keeps the interior point");
+    check(optimal &&
+            never.at("n_cracks").as_number() ==
+              always.at("n_cracks").as_number() &&
+            never.at("n_hinges").as_number() ==
+              always.at("n_hinges").as_number(),
+          name + ": the same cracks and hinges as the vertex");
+    return {never, always};
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  {
+    const auto [never, always] =
+      both("arch",
+           arch_prm(5, 1, 200, "0; 0; -0.01") + "subsection Interface model\n" +
+             no_tension + "end\n");
+    const double error = relative(never.at("objective").as_number(),
+                                  always.at("objective").as_number());
+    if (!(error <= 1e-8))
+      std::cout << "  relative difference " << error << "\n";
+    check(always.at("objective").as_number() > 0 && error <= 1e-8,
+          "arch: the same optimum as the vertex (1e-8)");
+  }
+  {
+    const auto [never, always] =
+      both("bothwell", example("bothwell-vertical-settlement"));
+    const double scale = never.at("total_weight").as_number() *
+                         never.at("max_settlement").as_number();
+    const double difference = std::abs(never.at("objective").as_number() -
+                                       always.at("objective").as_number());
+    if (!(difference <= 1e-8 * scale))
+      std::cout << "  difference " << difference << " J, W delta " << scale
+                << " J\n";
+    check(std::abs(always.at("objective").as_number()) <= 1e-8 * scale &&
+            difference <= 1e-8 * scale,
+          "bothwell: the optimum 0 of the vertex to 1e-8 W delta");
+  }
+  for (const std::string c : {"never", "always"})
+    {
+      const masonry::Json spreading =
+        run("spreading_" + c,
+            example("bothwell-horizontal-settlement") + crossover(c));
+      check(spreading.at("status").as_string() == "incompatible",
+            "bothwell, horizontal settlement, Crossover = " + c +
+              ": incompatible");
+    }
+}
