@@ -10,7 +10,9 @@
  *   interior point (lp_message), and its optimum equals the vertex of
  *   `Crossover = always` (an independent solve: barrier, crossover and the
  *   simplex's clean-up) to 1e-8 relative, for `automatic` and for
- *   `barrier`.
+ *   `barrier`; also the limit load at 200 blocks per half, whose dual LP
+ *   has a dense column (the load multiplier's) that the barrier's
+ *   factorisation takes as dense when its point may be kept.
  * - With the default settings (no `Crossover` entry) the settlement run
  *   keeps the interior point: `never` is the default.
  * - The statuses stay the simplex's: the same arch at t/R = 0.06 without
@@ -84,6 +86,14 @@ main(int argc, char **argv)
     arch_prm(5, 1, 16, "0; 0; -0.01") + mohr_coulomb;
   compare("settlement", "settlement", settlement, "objective");
   compare("limit load", "limit", arch_limit_load_prm(), "load_multiplier");
+  // 200 blocks per half: the multiplier's column of the dual LP has 400
+  // entries, a dense column for the barrier's factorisation
+  std::string fine = arch_limit_load_prm();
+  fine.replace(fine.find("Blocks along u = 16"), 19, "Blocks along u = 200");
+  compare("limit load, 200 blocks per half",
+          "limit_fine",
+          fine,
+          "load_multiplier");
   // `never' is the default (since 2026-11-29): a run without the entry
   // keeps the interior point
   const masonry::Json by_default = run("settlement_default", settlement);

@@ -10,6 +10,10 @@
  *   optimum equals the vertex of `Crossover = always` (an independent solve:
  *   the primal simplex on the dual, then the clean-up) to 1e-8 relative, and
  *   it finds the same cracks and hinges.
+ * - The limit load of the same arch under a horizontal acceleration: its
+ *   dual LP has a column of 400 entries (the load multiplier's), and such
+ *   LPs stay on the simplex (the boxed barrier's point missed the check
+ *   there): the vertex's multiplier to 1e-12.
  * - The Bothwell vertical settlement example (prm/examples, 12 x 16 blocks
  *   per half: 2304 rows) with no tension no sliding joints: no block moves
  *   at the vertex (its optimum is 0: the settling support separates), and
@@ -102,6 +106,26 @@ main(int argc, char **argv)
       std::cout << "  relative difference " << error << "\n";
     check(always.at("objective").as_number() > 0 && error <= 1e-8,
           "arch: the same optimum as the vertex (1e-8)");
+  }
+  {
+    std::string limit = arch_limit_load_prm();
+    limit.replace(limit.find("Blocks along u = 16"),
+                  19,
+                  "Blocks along u = 200");
+    limit += "subsection Interface model\n" + no_tension + "end\n";
+    const masonry::Json never = run("limit_never", limit + crossover("never"));
+    const masonry::Json always =
+      run("limit_always", limit + crossover("always"));
+    const bool optimal = never.at("status").as_string() == "optimal" &&
+                         always.at("status").as_string() == "optimal";
+    const double error = optimal ?
+                           relative(never.at("load_multiplier").as_number(),
+                                    always.at("load_multiplier").as_number()) :
+                           1.;
+    if (!(error <= 1e-12))
+      std::cout << "  relative difference " << error << "\n";
+    check(optimal && !kept_interior(never) && error <= 1e-12,
+          "limit load: the simplex's vertex with either setting (1e-12)");
   }
   {
     const auto [never, always] =

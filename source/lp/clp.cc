@@ -390,10 +390,10 @@ namespace masonry
               // 3357 pivots), with Clp's stopping tolerance 1e-8 (1e-9 to
               // 1e-12 went on past the barrier's accuracy and ended up to
               // 0.02 from the optimum); smaller LPs get the vertex, which
-              // costs little there, and so do LPs with a dense column (a
-              // limit load's multiplier: its A D A^T is dense, 2 x slower
-              // at 24 x 32) (contrib/benchmarks/lp_solvers/
-              // results-2026-11-29b.md)
+              // costs little there, and so do limit loads (a dense column:
+              // on an arch of 400 blocks the point missed the check's gap,
+              // 1.1e-6, or with larger bounds by far) (contrib/benchmarks/
+              // lp_solvers/results-2026-11-29b.md)
               const auto boxed = boxed_copy(*dual, 1.);
               const bool kept =
                 barrier_with_crossover(*boxed, keep, false, 1e-8);

@@ -57,12 +57,24 @@ namespace masonry
        *   indirection per entry). Each entry accumulates the same terms
        *   in the same order, so the factor is bit for bit Clp's. Without
        *   a plan (dropped rows, dense columns, KKT) it is Clp's code.
+       * - With @p dense_threshold 100, columns of 100 entries or more (at
+       *   most 100 of them) are Clp's dense columns: left out of A D A^T
+       *   and brought in by a dense low-rank correction. A limit load's
+       *   dual LP has one, the load multiplier, with an entry per block,
+       *   which makes A D A^T dense (Bothwell seismic, 24 x 32 blocks per
+       *   half: 20.0 -> 4.5 CPU s with Mohr-Coulomb joints, 11.1 -> 0.59 s
+       *   with no tension no sliding). Only for a point that may be kept:
+       *   Clp's crossover from such a point took 270283 pivots and 288 s
+       *   at 12 x 16 against 2.9 s from the point without them
+       *   (contrib/benchmarks/lp_solvers/results-2026-11-29b.md). A
+       *   contact force has at most 12 entries; LPs without such columns
+       *   are factorised as before.
        */
       class ReusedCholesky : public ClpCholeskyBase
       {
       public:
-        ReusedCholesky()
-          : ClpCholeskyBase(-1)
+        explicit ReusedCholesky(const int dense_threshold)
+          : ClpCholeskyBase(dense_threshold)
         {}
 
         ReusedCholesky(const ReusedCholesky &) = default;
@@ -426,7 +438,9 @@ namespace masonry
       barrier.eventHandler()->setSimplex(nullptr);
       if (numberRows + numberColumns > 10000)
         barrier.setMaximumBarrierIterations(1000);
-      ReusedCholesky *cholesky = new ReusedCholesky();
+      // dense columns only for a point that may be kept (see
+      // ReusedCholesky)
+      ReusedCholesky *cholesky = new ReusedCholesky(accept ? 100 : -1);
       cholesky->setIntegerParameter(0, 0);
       barrier.setCholesky(cholesky);
       barrier.scaling(0);

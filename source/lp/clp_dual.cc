@@ -224,11 +224,13 @@ namespace masonry
       std::snprintf(text,
                     sizeof(text),
                     "relative gap %.2e, primal residual %.2e, dual residual "
-                    "%.2e, bound %.12g",
+                    "%.2e, bound %.12g, objective %.12g, scale %.6g",
                     relative_gap(),
                     primal_residual,
                     dual_residual,
-                    dual_objective);
+                    dual_objective,
+                    primal_objective,
+                    work_scale);
       return text;
     }
 
@@ -336,7 +338,7 @@ namespace masonry
     {
       const int *length = model.matrix()->getVectorLengths();
       for (int j = 0; j < model.numberColumns(); ++j)
-        if (length[j] > 100)
+        if (length[j] >= 100)
           return true;
       return false;
     }

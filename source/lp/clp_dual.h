@@ -153,9 +153,9 @@ namespace masonry
     boxed_copy(const ClpSimplex &dual, double factor);
 
     /**
-     * Whether a column of @p model has more than 100 entries (a contact
+     * Whether a column of @p model has 100 entries or more (a contact
      * force of a mechanism LP's dual has at most 12; the load multiplier of
-     * a limit load LP one per velocity).
+     * a limit load LP one per block).
      */
     bool
     has_dense_column(const ClpSimplex &model);
