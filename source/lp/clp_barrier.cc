@@ -62,8 +62,8 @@ namespace masonry
        *   and brought in by a dense low-rank correction. A limit load's
        *   dual LP has one, the load multiplier, with an entry per block,
        *   which makes A D A^T dense (Bothwell seismic, 24 x 32 blocks per
-       *   half: 20.0 -> 4.5 CPU s with Mohr-Coulomb joints, 11.1 -> 0.59 s
-       *   with no tension no sliding). Only for a point that may be kept:
+       *   half, Mohr-Coulomb joints: 20.0 -> 4.2 CPU s). Only for a point
+       *   that may be kept:
        *   Clp's crossover from such a point took 270283 pivots and 288 s
        *   at 12 x 16 against 2.9 s from the point without them
        *   (contrib/benchmarks/lp_solvers/results-2026-11-29b.md). A

@@ -206,8 +206,7 @@ namespace masonry
       return std::abs(dual_objective - primal_objective) /
              std::max({std::abs(primal_objective),
                        std::abs(dual_objective),
-                       1e-2 * work_scale,
-                       1e-6});
+                       gap_floor});
     }
 
     bool

@@ -104,10 +104,17 @@ namespace masonry
        */
       double work_scale = 0;
       /**
+       * The smallest denominator of relative_gap(): 1e-6, or on the
+       * no-tension route of `automatic` 1 % of work_scale (there the only
+       * finite bounds are the prescribed velocities), so that an optimum
+       * of 0 (a settlement that moves no block) is judged on that scale.
+       * Mohr-Coulomb LPs have larger finite bounds (work_scale 462 on the
+       * Bothwell example, whose optimum is 0.06), so not there.
+       */
+      double gap_floor = 1e-6;
+      /**
        * |dual_objective - primal_objective| over the largest of their
-       * absolute values and 1 % of work_scale (at least 1e-6): an optimum
-       * of 0 (a settlement that moves no block) is judged on the LP's own
-       * scale.
+       * absolute values and gap_floor.
        */
       double
       relative_gap() const;
