@@ -86,7 +86,8 @@ namespace masonry
         dealii::Patterns::Double(1e-12, 1e-3),
         "With `Crossover = never': the largest relative duality gap, bound "
         "violation and dual sign violation of the barrier's point that is kept "
-        "as the optimum (else the crossover runs). The gap is relative to the "
+        "as the optimum (else the crossover runs; on the no-tension route of "
+        "`automatic' the primal simplex). The gap is relative to the "
         "objective (at least 1e-6), on the no-tension route of `automatic' to "
         "the larger of the objective and 1 % of the LP's own scale (the "
         "1-norm of its objective times its largest finite bound: the loads' "
