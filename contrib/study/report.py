@@ -28,6 +28,8 @@ import re
 import sys
 import time
 
+import bonded
+
 THICKNESSES = ("single", "double", "triple")
 COLOURS = {1: "tab:blue", 2: "tab:orange", 3: "tab:green"}
 # Eurocode 6 (EN 1996-1-1 Eq. 3.1, Table 3.3) and Kaushik, Rai & Jain 2007;
@@ -716,6 +718,17 @@ def sweep_plots(directory, sweep, fit):
     plt.close(fig)
 
 
+def bonded_mesh_note(directory):
+    """The note ", mesh LxWxH cells per unit + joint" of the bonded runs,
+    from the header of the first one's parameter file ("" without)."""
+    for name in sorted(os.listdir(directory)):
+        if name.startswith("bonded-") and name.endswith(".prm"):
+            with open(os.path.join(directory, name)) as f:
+                m = re.search(r"\bmesh (\d+x\d+x\d+)", f.readline())
+            return f", mesh {m.group(1)} cells per unit + joint" if m else ""
+    return ""
+
+
 def main(argv):
     if len(argv) != 1 or not os.path.isdir(argv[0]):
         print(__doc__, file=sys.stderr)
@@ -723,9 +736,11 @@ def main(argv):
     directory = os.path.abspath(argv[0])
     found = specimens(directory)
     pairs = sweep_pairs(directory)
-    if not found and not pairs:
-        print(f"report: error: no specimens (THICKNESS-SEED.prm) and no sweep "
-              f"pairs (sweep-fbF_B-fmF_M.prm) in {directory}",
+    bonded_lines = bonded.section(directory, bonded_mesh_note(directory))
+    if not found and not pairs and not bonded_lines:
+        print(f"report: error: no specimens (THICKNESS-SEED.prm), no sweep "
+              f"pairs (sweep-fbF_B-fmF_M.prm) and no bonded runs "
+              f"(bonded-THICKNESS-fbF_B-fmF_M.prm) in {directory}",
               file=sys.stderr)
         return 1
     data = [load(directory, t, seed) for t, seed in found]
@@ -785,6 +800,7 @@ def main(argv):
     if sweep:
         text += sweep_section(directory, sweep)
         text += ["", "Plots: sweep_strength.png, sweep_modulus.png.", ""]
+    text += bonded_lines
     bad = [(s["name"], s["row"]["status"], s["summary"], s["log"])
            for s in data if s["row"]["status"] != "completed"]
     bad += [(r["name"], r["status"], {}, os.path.join(directory,
@@ -808,6 +824,8 @@ def main(argv):
     if sweep:
         sweep_plots(directory, sweep, fit)
         written += ["sweep.csv", "sweep_strength.png", "sweep_modulus.png"]
+    if bonded_lines:
+        written.append("bonded.csv")
     print("\n".join(text))
     print(f"report: wrote {', '.join(written)} in {directory}/")
     return 0

@@ -71,6 +71,12 @@ SWEEP_MESH = "6x3x3"
 # detailed come from the single-leaf monotonic example
 DETAILED_BASE = os.path.join(root, "prm", "examples",
                              "wallette-single-monotonic.prm")
+# the `bonded' part: every sweep pair in the single, double and triple
+# monotonic examples, on this mesh (--bonded-mesh): the coarsest, 2x1x1,
+# where the example mesh's ratios double / single and triple / single are
+# within 1 % (0.952 / 0.956 against 0.956 / 0.965, doc/brickwork.md,
+# diagnosis) and a triple wall takes about 100 CPU s instead of 550
+BONDED_MESH = "2x1x1"
 
 
 def sweep_target(f_b, E_m, h_b, h_m):
@@ -275,15 +281,21 @@ def make_sweep_prm(f_b, f_m, directory, quick, model, mesh=SWEEP_MESH):
     return name, prm, out
 
 
-def make_detailed_sweep_prm(f_b, f_m, directory, quick, mesh=SWEEP_MESH):
+def make_detailed_sweep_prm(f_b, f_m, directory, quick, mesh=SWEEP_MESH,
+                            thickness=None):
     """The sweep pair for the detailed model: the single-leaf monotonic
     example (DETAILED_BASE) with the unit and mortar inputs of
     sweep_inputs(), on the mesh @p mesh (`LxWxH'; --quick: the coarsest),
     run to sweep_target(), with only the curve tables written (no VTU, no
-    plots)."""
-    source = DETAILED_BASE
+    plots). With @p thickness (the `bonded' part) the monotonic example of
+    that thickness instead, named bonded-THICKNESS-fbF_B-fmF_M."""
+    if thickness is None:
+        source, name = DETAILED_BASE, f"sweep-fb{f_b:g}-fm{f_m:g}"
+    else:
+        source = os.path.join(root, "prm", "examples",
+                              f"wallette-{thickness}-monotonic.prm")
+        name = f"bonded-{thickness}-fb{f_b:g}-fm{f_m:g}"
     text = open(source).read()
-    name = f"sweep-fb{f_b:g}-fm{f_m:g}"
     out = os.path.join(directory, name)
     text = set_entry(text, "Output directory", out, "top")
     text = set_entry(text, "Assembly threads", "1", "wallette")
@@ -482,6 +494,7 @@ def main():
     p.add_argument("--model", default="detailed",
                    choices=("simplified", "detailed"))
     p.add_argument("--sweep-mesh", default=SWEEP_MESH)
+    p.add_argument("--bonded-mesh", default=BONDED_MESH)
     p.add_argument("--report-only", action="store_true")
     p.add_argument("--no-setup", action="store_true")
     args = p.parse_args()
@@ -493,12 +506,13 @@ def main():
             raise SystemExit(f"study: error: unknown thickness `{t}' "
                              f"(one of {', '.join(THICKNESSES)})")
     parse_mesh(args.sweep_mesh)
+    parse_mesh(args.bonded_mesh)
     seeds = [int(s) for s in args.seeds.split(",") if s]
     parts = [x for x in args.part.split(",") if x]
     for x in parts:
-        if x not in ("specimens", "sweep"):
+        if x not in ("specimens", "sweep", "bonded"):
             raise SystemExit(f"study: error: unknown part `{x}' (specimens, "
-                             "sweep)")
+                             "sweep, bonded)")
     directory = os.path.abspath(
         args.output or ("output/study-quick" if args.quick else "output/study"))
     os.makedirs(directory, exist_ok=True)
@@ -517,13 +531,22 @@ def main():
         runs += [make_sweep_prm(f_b, f_m, directory, args.quick, args.model,
                                 args.sweep_mesh)
                  for f_b in SWEEP_FB for f_m in SWEEP_FM]
+    if "bonded" in parts:
+        if args.model != "detailed":
+            raise SystemExit("study: error: --part bonded needs --model "
+                             "detailed (the bonded examples' joints)")
+        runs += [make_detailed_sweep_prm(f_b, f_m, directory, args.quick,
+                                         args.bonded_mesh, t)
+                 for f_b in SWEEP_FB for f_m in SWEEP_FM
+                 for t in thicknesses]
     if args.jobs > 1:
         # the longest runs first (results-2026-11-29: a triple specimen
         # took about 2.5 times a double's CPU time and 6 times a single's,
         # a sweep pair 12-101 s), so that the last ones to finish are short
         # and the cores stay busy to the end
         rank = {"triple": 0, "double": 1, "sweep": 2, "single": 3}
-        runs.sort(key=lambda run: rank.get(run[0].split("-")[0], 2))
+        runs.sort(key=lambda run: rank.get(
+            run[0].split("-")[1 if run[0].startswith("bonded-") else 0], 2))
     print(f"study: {len(runs)} runs, {min(args.jobs, len(runs))} at a time"
           f"{' (quick)' if args.quick else ''}, model {args.model}, in "
           f"{directory}/", flush=True)
@@ -566,7 +589,7 @@ def main():
             status = summary.get("status", "no summary.json")
             if code == 0 and (status == "completed" or
                               (status == "interrupted" and
-                               name.startswith("sweep-"))):
+                               name.startswith(("sweep-", "bonded-")))):
                 print(f"study: finished {name} in {seconds:.0f} s "
                       f"({cpu:.0f} CPU s): peak "
                       f"{summary['peak_stress'] / 1e6:.2f} MPa at strain "
