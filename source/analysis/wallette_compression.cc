@@ -120,7 +120,9 @@ namespace masonry
           "0",
           Double(),
           "Width of the unfilled strip of every bed joint on each side of "
-          "every collar joint, m (`Model = detailed' only, >= 0): the "
+          "every collar joint, m (`Model = detailed' only, >= 0; the strips "
+          "must stay apart and off the faces, e.g. g < 0.1025 m in a double "
+          "and g < 0.05125 m in a triple english wall of 215 mm units): the "
           "bed-joint mortar in the plane of a collar joint, widened by this "
           "on both sides, is a void (no cells; the unit faces above and "
           "below it are free), as where the mortar beds of the wythes are "

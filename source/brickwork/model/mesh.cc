@@ -194,6 +194,28 @@ namespace masonry
                 lines[1].push_back(bed_gaps.back().first);
                 lines[1].push_back(bed_gaps.back().second);
               }
+            // every wythe keeps a bed: the strips stay apart and off the
+            // faces (otherwise a wythe's units rest on nothing)
+            std::sort(bed_gaps.begin(), bed_gaps.end());
+            double left  = 0;
+            bool   apart = true;
+            for (const auto &gap : bed_gaps)
+              {
+                apart = apart && gap.first - left >= tol;
+                left  = gap.second;
+              }
+            if (!apart || extent[1] - left < tol)
+              {
+                std::ostringstream m;
+                m << settings.collar_bed_gap
+                  << " m leaves a wythe without bed-joint mortar: the "
+                     "unfilled strips (the collar joint's "
+                  << hm
+                  << " m and the gap on each side) meet each other or a "
+                     "face of the "
+                  << extent[1] << " m thick wall";
+                AssertThrow(false, ExcParameter("Collar bed gap", m.str()));
+              }
           }
         // the grid: the lines through every face, each interval divided
         // at about the mesh spacing (mortar intervals, h_m, in one cell)
