@@ -76,15 +76,15 @@ namespace masonry
         prm.declare_entry("Brick length",
                           "0.215",
                           Double(0),
-                          "Length of a brick without mortar, m (> 0).");
+                          "Length of a brick without mortar, m (>= 1e-6).");
         prm.declare_entry("Brick width",
                           "0.1025",
                           Double(0),
-                          "Width of a brick without mortar, m (> 0).");
+                          "Width of a brick without mortar, m (>= 1e-6).");
         prm.declare_entry("Brick height",
                           "0.065",
                           Double(0),
-                          "Height of a brick without mortar, m (> 0).");
+                          "Height of a brick without mortar, m (>= 1e-6).");
         prm.declare_entry("Joint thickness",
                           "0.010",
                           Double(0),
@@ -93,7 +93,7 @@ namespace masonry
                           "every side. `Model = simplified': the joints "
                           "become zero-thickness interfaces; `detailed': the "
                           "mortar is meshed as one layer of hexahedra of "
-                          "this thickness (> 0 then).");
+                          "this thickness (>= 1e-6 then).");
         prm.declare_entry(
           "Model",
           "simplified",
@@ -608,6 +608,12 @@ namespace masonry
                     ExcParameter("Joint thickness",
                                  "must be positive with `Model = detailed' "
                                  "(the mortar layer's thickness)"));
+        // sizes too small to mesh (1e-30 m gave units or mortar of no cells)
+        for (const std::string e :
+             {"Brick length", "Brick width", "Brick height", "Joint thickness"})
+          AssertThrow(
+            prm.get_double(e) >= 1e-6 || (e[0] == 'J' && !s.mesh.detailed),
+            ExcParameter(e, "must be at least 1e-6 m, got " + prm.get(e)));
         for (const char *entry : {"Head joint fill", "Collar joint fill"})
           {
             const double f = prm.get_double(entry);
