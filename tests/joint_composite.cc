@@ -647,6 +647,23 @@ namespace
     check(message.find("Compressive fracture energy") != std::string::npos,
           "snap-back of the cap softening refused, naming Compressive "
           "fracture energy");
+    // a cap below the tension cut-off (a cap of 1 Pa stopped a wallette
+    // run with no admissible return) is refused too
+    q              = p;
+    q.cap_strength = 0.5 * p.tensile_strength;
+    message.clear();
+    try
+      {
+        const CompositeJoint bad(q);
+      }
+    catch (const std::invalid_argument &e)
+      {
+        message = e.what();
+      }
+    check(message.find("Cap strength must not be below Tensile strength") !=
+            std::string::npos,
+          "a cap strength below the tensile strength refused, naming Cap "
+          "strength");
   }
 
   // ---------------------------------------------------------------------

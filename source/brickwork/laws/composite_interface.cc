@@ -99,12 +99,13 @@ namespace masonry
                           Double(0),
                           "G_II, J/m^2 = N/m (> c0^2 / k_s): the energy of "
                           "the cohesion softening at zero normal stress.");
-        prm.declare_entry("Cap strength",
-                          "10.5e6",
-                          Double(0),
-                          "Peak sbar_p of the elliptical compression cap, "
-                          "Pa (> 0): the compressive strength of the joint "
-                          "with C_nn = 1, C_n = 0.");
+        prm.declare_entry(
+          "Cap strength",
+          "10.5e6",
+          Double(0),
+          "Peak sbar_p of the elliptical compression cap, "
+          "Pa (>= Tensile strength): the compressive strength of the joint "
+          "with C_nn = 1, C_n = 0.");
         prm.declare_entry("Cap Cnn",
                           "1",
                           Double(0),
@@ -376,14 +377,23 @@ namespace masonry
           }
         catch (const std::invalid_argument &e)
           {
-            // the message names the entry (composite joint: <entry> ...)
-            std::string m = e.what();
+            // the message names the entry (composite joint: <entry> ...):
+            // an entry of this subsection is named as the error's entry
+            std::string m = e.what(), entry = error_entry;
             if (factor != 1.)
               m += " (with the strengths times 1.8, the largest factor of "
                    "`Strength scatter')";
-            AssertThrow(
-              false,
-              ExcParameter(error_entry.empty() ? "Composite" : error_entry, m));
+            for (const std::string name : {"Tensile strength",
+                                           "Mode I fracture energy",
+                                           "Cohesion",
+                                           "Friction",
+                                           "Mode II fracture energy",
+                                           "Cap strength",
+                                           "Compressive fracture energy"})
+              if (entry.empty() && m.rfind("composite joint: " + name, 0) == 0)
+                entry = name;
+            AssertThrow(false,
+                        ExcParameter(entry.empty() ? "Composite" : entry, m));
           }
         return CompositeJoint(p);
       }

@@ -87,6 +87,9 @@ namespace masonry
         if (!(p.friction >= 0) || !(p.residual_friction >= 0) ||
             !(p.dilatancy >= 0))
           bad("Friction, Residual friction and Dilatancy must be >= 0");
+        if (p.cap_strength < p.tensile_strength)
+          bad("Cap strength must not be below Tensile strength (a cap of 1 "
+              "Pa left the return mapping without an admissible state)");
         if (p.tensile_strength * std::max(p.friction, p.residual_friction) >
             p.cohesion)
           bad("Tensile strength must not exceed Cohesion / Friction (the "
