@@ -389,6 +389,9 @@ namespace masonry
                                            "Friction",
                                            "Mode II fracture energy",
                                            "Cap strength",
+                                           "Cap Cnn",
+                                           "Cap Css",
+                                           "Cap peak jump",
                                            "Compressive fracture energy"})
               if (entry.empty() && m.rfind("composite joint: " + name, 0) == 0)
                 entry = name;
