@@ -75,7 +75,8 @@ DETAILED_BASE = os.path.join(root, "prm", "examples",
 # monotonic examples, on this mesh (--bonded-mesh): the coarsest, 2x1x1,
 # where the example mesh's ratios double / single and triple / single are
 # within 1 % (0.952 / 0.956 against 0.956 / 0.965, doc/brickwork.md,
-# diagnosis) and a triple wall takes about 100 CPU s instead of 550
+# diagnosis) and a triple wall takes 33-159 CPU s (results-2026-11-29d)
+# instead of about 450-550 on the example mesh
 BONDED_MESH = "2x1x1"
 
 
