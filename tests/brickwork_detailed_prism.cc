@@ -35,10 +35,10 @@
 #include <iomanip>
 #include <sstream>
 
-#include "../source/brickwork/model/mesh.h"
-#include "../source/brickwork/model/point_states.h"
-#include "../source/brickwork/model/specimen.h"
-#include "../source/brickwork/model/system.h"
+#include "../source/brickwork/assembly/point_states.h"
+#include "../source/brickwork/solution/system.h"
+#include "../source/brickwork/specimen/mesh.h"
+#include "../source/brickwork/specimen/specimen.h"
 #include "brickwork_tests.h"
 
 using namespace brickwork_tests;

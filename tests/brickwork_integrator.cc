@@ -18,7 +18,7 @@
 #include <cmath>
 #include <iostream>
 
-#include "../source/brickwork/model/integrator.h"
+#include "../source/brickwork/assembly/integrator.h"
 #include "vault_tests.h"
 
 using namespace dealii;
@@ -50,6 +50,7 @@ main(int argc, char **argv)
   ParameterHandler                 prm;
   masonry::plugins::Registry<InterfaceLaw>::declare_parameters(prm);
   masonry::plugins::Registry<BrickMaterial>::declare_parameters(prm);
+  masonry::plugins::Registry<Integrator>::declare_parameters(prm);
   prm.parse_input_from_string(
     "subsection Interface law\nset Law = bilinear\n"
     "set Normal stiffness = 2.5e11\nset Shear stiffness = 1e11\n"
@@ -70,7 +71,8 @@ main(int argc, char **argv)
   Local33             D;
   std::vector<double> damage(1);
 
-  const auto  implicit = create_integrator(IntegratorSettings());
+  const auto implicit =
+    masonry::plugins::Registry<Integrator>::create(prm, "implicit");
   PointStates states;
   states.initialize(1, std::vector<double>(n, 0.), {0});
   implicit->joint_response(*law, jump, states, 0, point, t, D);
@@ -85,9 +87,8 @@ main(int argc, char **argv)
                      "implicit: the step's tangent comes from the new state, "
                      "no older state kept");
 
-  IntegratorSettings settings;
-  settings.implex            = true;
-  const auto          implex = create_integrator(settings);
+  const auto implex =
+    masonry::plugins::Registry<Integrator>::create(prm, "implex");
   std::vector<double> old(n, 0.), older(n, 0.);
   old[id]   = 0.4;
   older[id] = 0.2;

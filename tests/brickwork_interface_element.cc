@@ -17,7 +17,7 @@
 #include <iostream>
 #include <random>
 
-#include "../source/brickwork/model/interface_element.h"
+#include "../source/brickwork/assembly/interface_element.h"
 #include "vault_tests.h"
 
 using namespace dealii;

@@ -44,9 +44,9 @@
 #include <iomanip>
 #include <iostream>
 
-#include "../source/brickwork/model/joints.h"
-#include "../source/brickwork/model/mesh.h"
-#include "../source/brickwork/model/specimen.h"
+#include "../source/brickwork/specimen/joints.h"
+#include "../source/brickwork/specimen/mesh.h"
+#include "../source/brickwork/specimen/specimen.h"
 
 using namespace dealii;
 using namespace masonry::brickwork;
@@ -100,7 +100,7 @@ namespace
     const auto   specimen = model::make_specimen(triangulation,
                                                geometry.n_bricks,
                                                model::Joints(),
-                                               SpecimenSettings());
+                                               model::SpecimenSettings());
     unsigned int n_bed = 0, n_vertical = 0, n_unit = 0, bad_bed = 0,
                  bad_vertical = 0, bad_unit = 0;
     double bed = 0, bed_band = 0;

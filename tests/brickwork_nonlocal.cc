@@ -33,8 +33,8 @@
 #include <cmath>
 #include <iostream>
 
-#include "../source/brickwork/model/deletion.h"
-#include "../source/brickwork/model/nonlocal.h"
+#include "../source/brickwork/assembly/nonlocal.h"
+#include "../source/brickwork/solution/deletion.h"
 #include "vault_tests.h"
 
 using namespace dealii;

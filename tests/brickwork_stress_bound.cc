@@ -14,7 +14,7 @@
 #include <cmath>
 #include <iostream>
 
-#include "../source/brickwork/model/bounds.h"
+#include "../source/brickwork/solution/bounds.h"
 #include "vault_tests.h"
 
 using namespace masonry::brickwork::model;

@@ -1,49 +1,70 @@
 /**
  * @file
- * The step loop of the wallette model. The parts live in model/ (mesh,
- * joints, interface element, system, point states, integrator, assembler,
- * linear solvers, Newton, step control, deletion, checkpoint) and the
- * outputs in postprocess/; this file builds them once and moves the platen
- * through the protocol:
+ * The step loop of the wallette model. The parts live in folders that read
+ * in the order the data flows (specimen/: mesh, joints, specimen; assembly/:
+ * interface element, point states, integrators, assembler; solution/:
+ * system, linear solvers, Newton, step controller, deletion; protocols/;
+ * laws/; postprocess/; checkpoint); this file builds them once and moves the
+ * platen through the protocol:
  *
- *   settings -> mesh -> joints -> system -> protocol -> for each step:
- *   Newton (assembler, linear solver) -> integrator update -> accept ->
- *   deletion -> curve -> postprocessors -> checkpoint
+ *   settings -> mesh -> joints -> system -> specimen, point states ->
+ *   for each step of the step controller: Newton (assembler, linear
+ *   solver) -> update of the states -> the controller's decision (accept,
+ *   redo, correct, stop) -> accept -> deletion -> curve -> postprocessors
+ *   -> checkpoint
  */
 #include <masonry/brickwork/brick_material.h>
 #include <masonry/brickwork/interface_law.h>
-#include <masonry/brickwork/wallette.h>
 #include <masonry/core/output_directory.h>
 
 #include <deal.II/base/multithread_info.h>
 #include <deal.II/distributed/shared_tria.h>
+
+#include "wallette.h"
 
 #include <chrono>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
 
-#include "model/assembler.h"
-#include "model/bounds.h"
-#include "model/checkpoint.h"
-#include "model/deletion.h"
-#include "model/floor_correction.h"
-#include "model/integrator.h"
-#include "model/linear_solvers.h"
-#include "model/mesh.h"
-#include "model/newton.h"
-#include "model/regions.h"
-#include "model/report.h"
-#include "model/step_control.h"
-#include "model/stop_messages.h"
-#include "model/system.h"
-#include "model/view.h"
+#include "assembly/regions.h"
 #include "postprocess/builtin.h"
+#include "postprocess/report.h"
+#include "solution/bounds.h"
+#include "solution/stop_messages.h"
 
 namespace masonry
 {
   namespace brickwork
   {
+    void
+    WalletteSettings::declare_parameters(dealii::ParameterHandler &prm)
+    {
+      MeshSettings::declare_parameters(prm);
+      model::PlatenSettings::declare_parameters(prm);
+      model::StepSettings::declare_parameters(prm);
+      model::NewtonSettings::declare_parameters(prm);
+      model::AssemblySettings::declare_parameters(prm);
+      model::SpecimenSettings::declare_parameters(prm);
+      model::DeletionSettings::declare_parameters(prm);
+      OutputSettings::declare_parameters(prm);
+      model::CheckpointSettings::declare_parameters(prm);
+    }
+
+    void
+    WalletteSettings::parse_parameters(dealii::ParameterHandler &prm)
+    {
+      mesh.parse_parameters(prm);
+      platen.parse_parameters(prm);
+      steps.parse_parameters(prm);
+      newton.parse_parameters(prm);
+      assembly.parse_parameters(prm);
+      specimen.parse_parameters(prm);
+      deletion.parse_parameters(prm);
+      output.parse_parameters(prm);
+      checkpoint.parse_parameters(prm);
+    }
+
     namespace
     {
       using namespace dealii;
@@ -60,9 +81,11 @@ namespace masonry
                  const InterfaceLaw     *splitting_law,
                  const BrickMaterial    *mortar,
                  const WalletteSettings &settings,
-                 std::vector<std::unique_ptr<postprocess::Postprocessor>>
-                            &postprocessors,
-                 RunContext &context);
+                 const WallettePlugins  &plugins,
+                 RunContext             &context);
+
+        /** The solver lets go of the matrix before it goes. */
+        ~Wallette();
 
         void
         run();
@@ -71,27 +94,44 @@ namespace masonry
         /** Mesh, joints, system, specimen, point states, caches. */
         void
         setup(const std::vector<Box> &boxes);
+        /** The point states of the laws (8 per cell, 4 per joint face, as
+         * the laws declare them). */
+        void
+        setup_point_states();
+        /** Solve @p step from the present state: predictor, Newton, the
+         * update of the states after it. */
+        StepOutcome
+        solve(const Step &step);
+        /** The largest change of a damage from the frozen to the updated
+         * states, over all ranks (an IMPL-EX correction pass). */
+        double
+        damage_change() const;
+        /** Every point's updated state is kept as the frozen one (the next
+         * pass of a correction). */
+        void
+        freeze();
+        /** The converged @p step becomes the old state; the deletions after
+         * it (how many cells). */
+        unsigned int
+        accept(const Step &step, const StepOutcome &outcome);
         /** The converged step into the curve, the postprocessors and the
          * screen; false (and nothing recorded) when its reaction, strain
          * or damages are not finite. */
         bool
-        record_step(const Segment     &leg,
+        record_step(const Step        &step,
                     const unsigned int its,
-                    const unsigned int removed,
-                    const unsigned int n_legs);
-        /** The converged step becomes the old state. */
+                    const unsigned int removed);
+        /** Every postprocessor's output of the present state. */
         void
-        accept_step();
+        output();
         CheckpointParts
         checkpoint_parts();
+        /** Write a checkpoint with @p status. */
+        void
+        save(const std::string &status);
         /** Start from zero or from the checkpoint. */
         void
         begin();
-        /** Whether `Maximum steps' stops the run after this step. */
-        bool
-        interrupted(const unsigned int steps_this_run,
-                    const unsigned int n_legs,
-                    const bool         finished) const;
         /** Summary entries and the closing line. */
         void
         finish(const std::string &status,
@@ -106,6 +146,9 @@ namespace masonry
          * both), nullptr: the simplified model. */
         const BrickMaterial               *mortar;
         const WalletteSettings            &settings;
+        const WallettePlugins             &plugins;
+        Integrator                        &integrator;
+        LinearSolver                      &solver;
         RunContext                        &context;
         ConditionalOStream                &pcout;
         parallel::shared::Triangulation<3> triangulation;
@@ -113,36 +156,34 @@ namespace masonry
         System                             system;
         Joints                             joints;
         Specimen                           specimen;
-        PointStates                      bricks, joint_points, splitting_points;
-        std::unique_ptr<Integrator>      integrator;
-        std::unique_ptr<LinearSolver>    solver;
-        std::unique_ptr<Protocol>        protocol;
-        std::unique_ptr<StepSizeControl> step_control;
-        std::unique_ptr<Assembler>       assembler;
-        std::vector<std::unique_ptr<postprocess::Postprocessor>>
-                                  &postprocessors;
-        std::vector<std::string>   postprocessor_data;
-        Progress                   progress;
-        std::vector<CurvePoint>    curve;
-        RunStatistics              statistics;
-        std::unique_ptr<ModelView> view;
+        PointStates                     bricks, joint_points, splitting_points;
+        std::unique_ptr<Assembler>      assembler;
+        std::unique_ptr<Newton>         newton;
+        std::unique_ptr<StepController> controller;
+        std::vector<std::string>        postprocessor_data;
+        std::vector<CurvePoint>         curve;
+        RunStatistics                   statistics;
+        std::unique_ptr<ModelView>      view;
+        /** The solution of the last converged step. */
+        System::Vector u_converged;
       };
 
-      Wallette::Wallette(
-        const std::vector<Box> &boxes,
-        const BrickMaterial    &material,
-        const InterfaceLaw     &law,
-        const InterfaceLaw     *splitting_law,
-        const BrickMaterial    *mortar,
-        const WalletteSettings &settings,
-        std::vector<std::unique_ptr<postprocess::Postprocessor>>
-                   &postprocessors,
-        RunContext &context)
+      Wallette::Wallette(const std::vector<Box> &boxes,
+                         const BrickMaterial    &material,
+                         const InterfaceLaw     &law,
+                         const InterfaceLaw     *splitting_law,
+                         const BrickMaterial    *mortar,
+                         const WalletteSettings &settings,
+                         const WallettePlugins  &plugins,
+                         RunContext             &context)
         : material(material)
         , law(law)
         , splitting_law(splitting_law)
         , mortar(mortar)
         , settings(settings)
+        , plugins(plugins)
+        , integrator(plugins.integrator)
+        , solver(plugins.solver)
         , context(context)
         , pcout(context.pcout)
         , triangulation(context.mpi_communicator,
@@ -150,15 +191,16 @@ namespace masonry
                         false,
                         parallel::shared::Triangulation<3>::partition_metis)
         , system(triangulation, context.mpi_communicator)
-        , integrator(create_integrator(settings.integrator))
-        , solver(create_linear_solver(settings.linear_solver, pcout))
-        , protocol(create_protocol(settings.protocol))
-        , postprocessors(postprocessors)
       {
         // the threads of the assemblies (0: deal.II's choice at start-up)
-        if (settings.integrator.threads > 0)
-          MultithreadInfo::set_thread_limit(settings.integrator.threads);
+        if (settings.assembly.threads > 0)
+          MultithreadInfo::set_thread_limit(settings.assembly.threads);
         setup(boxes);
+      }
+
+      Wallette::~Wallette()
+      {
+        solver.clear();
       }
 
       void
@@ -170,38 +212,86 @@ namespace masonry
         system.distribute_dofs();
         const auto spacing = mesh_spacing(settings.mesh);
         joints             = find_joints(system.dof_handler, geometry.height);
-        system.setup(joints, geometry, settings.platen, settings.mesh.gauss);
+        system.setup(joints,
+                     geometry,
+                     settings.platen,
+                     settings.mesh.gauss,
+                     plugins.protocol);
         specimen = make_specimen(triangulation,
                                  geometry.n_bricks,
                                  joints,
                                  settings.specimen);
+        setup_point_states();
+        assembler = std::make_unique<Assembler>(AssemblyParts{system,
+                                                              joints,
+                                                              specimen,
+                                                              material,
+                                                              law,
+                                                              integrator,
+                                                              bricks,
+                                                              joint_points,
+                                                              splitting_law,
+                                                              splitting_points},
+                                                settings.mesh.gauss,
+                                                spacing[0]);
+        assembler->make_elastic_caches();
+        solver.initialize(system.dof_handler, pcout);
+        const double target = plugins.protocol.target_displacement();
+        newton              = std::make_unique<Newton>(settings.newton,
+                                          1e-6 * material.youngs_modulus() *
+                                            geometry.gross_area *
+                                            std::abs(target) / geometry.height);
+        controller =
+          std::make_unique<StepController>(plugins.protocol,
+                                           settings.steps,
+                                           integrator.updates_after_step(),
+                                           settings.newton.max_newton,
+                                           bound_materials(material, mortar),
+                                           pcout);
+        view = std::make_unique<ModelView>(ModelView{settings,
+                                                     context,
+                                                     material,
+                                                     law,
+                                                     curve,
+                                                     geometry,
+                                                     system,
+                                                     joints,
+                                                     specimen,
+                                                     assembler->element(),
+                                                     bricks,
+                                                     joint_points,
+                                                     splitting_law,
+                                                     splitting_points,
+                                                     plugins.protocol,
+                                                     *controller});
+        postprocessor_data.assign(plugins.postprocessors.size(), std::string());
+        u_converged = system.u;
+      }
 
+      void
+      Wallette::setup_point_states()
+      {
         AssertThrow(material.nonlocal_length() == 0 ||
-                      settings.integrator.implex,
+                      integrator.updates_after_step(),
                     ExcMessage("Brick material: `Nonlocal length' > 0 needs "
                                "`Damage integration = implex'"));
         AssertThrow(material.nonlocal_length() == 0 ||
-                      !settings.integrator.implex_floor_correction,
+                      !settings.steps.implex_floor_correction,
                     ExcMessage("Brick material: `Nonlocal length' > 0 needs "
                                "`IMPL-EX floor correction = accept'"));
-        // point states: 8 per cell, 4 per joint face, as the laws declare
         std::vector<unsigned int> owned_bricks, owned_joints, owned_splitting;
         for (const auto &cell : triangulation.active_cell_iterators())
-          if (cell->is_locally_owned())
+          if (cell->is_locally_owned() && !material.is_linear())
             {
-              if (!material.is_linear())
-                {
-                  BrickPoint point;
-                  point.characteristic_length =
-                    specimen.cell_length[cell->active_cell_index()];
-                  point.strength_factor =
-                    specimen.cell_factor[cell->active_cell_index()];
-                  point.region =
-                    specimen.cell_region[cell->active_cell_index()];
-                  material.check_point(point);
-                  for (unsigned int q = 0; q < 8; ++q)
-                    owned_bricks.push_back(8 * cell->active_cell_index() + q);
-                }
+              BrickPoint point;
+              point.characteristic_length =
+                specimen.cell_length[cell->active_cell_index()];
+              point.strength_factor =
+                specimen.cell_factor[cell->active_cell_index()];
+              point.region = specimen.cell_region[cell->active_cell_index()];
+              material.check_point(point);
+              for (unsigned int q = 0; q < 8; ++q)
+                owned_bricks.push_back(8 * cell->active_cell_index() + q);
             }
         for (unsigned int n = 0; n < joints.faces.size(); ++n)
           if (joints.faces[n].owned)
@@ -239,49 +329,62 @@ namespace masonry
                                       joints.faces.size(),
                                     initial,
                                     owned_splitting);
+      }
 
-        assembler = std::make_unique<Assembler>(AssemblyParts{system,
-                                                              joints,
-                                                              specimen,
-                                                              material,
-                                                              law,
-                                                              *integrator,
-                                                              bricks,
-                                                              joint_points,
-                                                              splitting_law,
-                                                              splitting_points},
-                                                settings.mesh.gauss,
-                                                spacing[0]);
-        assembler->make_elastic_caches();
-        const double nominal = std::abs(settings.protocol.target_displacement /
-                                        settings.protocol.n_steps);
-        step_control         = create_step_size_control(settings.integrator,
-                                                settings.protocol,
-                                                settings.newton,
-                                                nominal);
-        view                 = std::make_unique<ModelView>(ModelView{settings,
-                                                     context,
-                                                     material,
-                                                     law,
-                                                     curve,
-                                                     geometry,
-                                                     system,
-                                                     joints,
-                                                     specimen,
-                                                     assembler->element(),
-                                                     bricks,
-                                                     joint_points,
-                                                     splitting_law,
-                                                     splitting_points,
-                                                     *protocol,
-                                                     progress});
-        postprocessor_data.assign(postprocessors.size(), std::string());
+      StepOutcome
+      Wallette::solve(const Step &step)
+      {
+        StepOutcome outcome;
+        // the predictor: none in a correction (it starts from its last pass)
+        newton->predict(system, step.correction ? 0. : step.ratio);
+        outcome.converged = newton->solve_step(system,
+                                               *assembler,
+                                               solver,
+                                               step.to,
+                                               step.time_step,
+                                               controller->largest_reaction(),
+                                               outcome);
+        // a converged mechanism is no state of the wallette: a smaller
+        // step, or the run stops (solution/deletion.h)
+        if (outcome.converged)
+          {
+            outcome.failure   = mechanism_problem(system, specimen);
+            outcome.converged = outcome.failure.empty();
+          }
+        if (!outcome.converged || !integrator.updates_after_step())
+          return outcome;
+        outcome.damage_error = assembler->update_states(step.time_step);
+        if (!std::isfinite(outcome.damage_error))
+          outcome.non_finite = assembler->non_finite();
+        else if (step.correction)
+          outcome.damage_change = damage_change();
+        return outcome;
+      }
+
+      double
+      Wallette::damage_change() const
+      {
+        double c = joint_points.largest_damage_change(law);
+        if (!material.is_linear())
+          c = std::max(c, bricks.largest_damage_change(material));
+        if (splitting_law)
+          c =
+            std::max(c, splitting_points.largest_damage_change(*splitting_law));
+        return Utilities::MPI::max(c, context.mpi_communicator);
       }
 
       void
-      Wallette::accept_step()
+      Wallette::freeze()
       {
-        const bool older = integrator->keeps_older();
+        bricks.freeze();
+        joint_points.freeze();
+        splitting_points.freeze();
+      }
+
+      unsigned int
+      Wallette::accept(const Step &step, const StepOutcome &outcome)
+      {
+        const bool older = integrator.keeps_older();
         for (unsigned int n = 0; n < joints.faces.size(); ++n)
           if (joints.faces[n].owned)
             for (unsigned int q = 0; q < InterfaceElement::n_points; ++q)
@@ -296,24 +399,40 @@ namespace masonry
                 bricks.accept(8 * cell->active_cell_index() + q, older);
         // the deletion and the output evaluate the law with them
         specimen.nonlocal_factors = assembler->nonlocal_factors();
+        system.last_increment     = system.u;
+        system.last_increment -= u_converged;
+        u_converged = system.u;
+        controller->accept(step, outcome.reaction);
+        unsigned int       faded   = 0;
+        const unsigned int removed = delete_cells(
+          settings.deletion, joints, material, bricks, system, specimen, faded);
+        // the deleted cells' DOFs are fixed from now on: no extrapolation
+        // across the change of the structure
+        if (removed > 0)
+          system.last_increment = 0;
+        if (removed > 0 || faded > 0)
+          {
+            assembler->invalidate();
+            solver.forget();
+          }
+        return removed;
       }
 
       bool
-      Wallette::record_step(const Segment     &leg,
+      Wallette::record_step(const Step        &step,
                             const unsigned int its,
-                            const unsigned int removed,
-                            const unsigned int n_legs)
+                            const unsigned int removed)
       {
         CurvePoint p;
-        p.displacement = progress.applied;
-        p.strain       = progress.applied / geometry.height;
+        p.displacement = controller->applied();
+        p.strain       = p.displacement / geometry.height;
         p.force        = system.reaction();
         p.stress       = p.force / geometry.gross_area;
         p.newton       = its;
         std::tie(p.max_damage, p.brick_damages) = max_damages(*view);
         p.gauge_strain                          = system.gauge_strain();
-        p.cycle                                 = leg.cycle;
-        p.unloading                             = leg.unloading;
+        p.cycle                                 = step.leg.cycle;
+        p.unloading                             = step.leg.unloading;
         p.deleted                               = specimen.n_deleted;
         bool finite = std::isfinite(p.force) && std::isfinite(p.stress) &&
                       std::isfinite(p.max_damage) &&
@@ -323,12 +442,12 @@ namespace masonry
         if (!finite)
           return false;
         curve.push_back(p);
-        for (auto &pp : postprocessors)
+        for (auto &pp : plugins.postprocessors)
           pp->step(*view);
-        pcout << "Step " << progress.step;
-        if (n_legs > 1)
-          pcout << " (cycle " << leg.cycle
-                << (leg.unloading ? ", unloading" : "") << ")";
+        pcout << "Step " << controller->n_steps();
+        if (plugins.protocol.is_cyclic())
+          pcout << " (cycle " << step.leg.cycle
+                << (step.leg.unloading ? ", unloading" : "") << ")";
         pcout << ": strain " << std::setprecision(4) << p.strain << ", stress "
               << p.stress * 1e-6 << " MPa, max damage " << p.max_damage;
         if (!p.brick_damages.empty())
@@ -344,29 +463,45 @@ namespace masonry
         return true;
       }
 
+      void
+      Wallette::output()
+      {
+        for (auto &pp : plugins.postprocessors)
+          pp->output(*view, controller->n_steps(), curve.back().strain);
+      }
+
       CheckpointParts
       Wallette::checkpoint_parts()
       {
-        return {progress,
+        return {*controller,
                 curve,
                 statistics,
                 specimen,
                 bricks,
                 joint_points,
                 splitting_points,
-                *solver,
-                *step_control,
+                solver,
                 system,
                 postprocessor_data};
       }
 
       void
+      Wallette::save(const std::string &status)
+      {
+        for (unsigned int i = 0; i < plugins.postprocessors.size(); ++i)
+          postprocessor_data[i] = plugins.postprocessors[i]->save();
+        save_checkpoint(checkpoint_parts(), status, context);
+      }
+
+      void
       Wallette::begin()
       {
+        auto &postprocessors = plugins.postprocessors;
         if (settings.checkpoint.resume)
           {
             auto parts = checkpoint_parts();
             load_checkpoint(parts, context, postprocessors.size());
+            u_converged = system.u;
             for (unsigned int i = 0; i < postprocessors.size(); ++i)
               try
                 {
@@ -376,8 +511,9 @@ namespace masonry
                 {
                   AssertThrow(false, other_postprocessors(e.what()));
                 }
-            pcout << "Resumed from the checkpoint at step " << progress.step
-                  << " (platen displacement " << progress.applied << " m)\n";
+            pcout << "Resumed from the checkpoint at step "
+                  << controller->n_steps() << " (platen displacement "
+                  << controller->applied() << " m)\n";
             for (auto &pp : postprocessors)
               pp->resume(*view);
           }
@@ -391,312 +527,74 @@ namespace masonry
           }
       }
 
-      bool
-      Wallette::interrupted(const unsigned int steps_this_run,
-                            const unsigned int n_legs,
-                            const bool         finished) const
-      {
-        const unsigned int max_steps = settings.protocol.max_steps;
-        return max_steps > 0 && steps_this_run >= max_steps &&
-               progress.segment < n_legs && !finished;
-      }
-
       void
       Wallette::run()
       {
         const auto start = Clock::now();
         describe_model(*view, mortar);
-        const std::vector<Segment> legs = protocol->legs();
-        const double nominal = std::abs(settings.protocol.target_displacement /
-                                        settings.protocol.n_steps);
-        progress.increment   = nominal;
         begin();
-        if (legs.size() > 1)
-          pcout << "Protocol: " << legs.size() / 2
-                << " load-unload cycles, unloading to "
-                << settings.protocol.unloading_stress * 1e-6 << " MPa\n";
-
-        const Newton newton(settings.newton,
-                            1e-6 * material.youngs_modulus() *
-                              geometry.gross_area *
-                              std::abs(settings.protocol.target_displacement) /
-                              geometry.height);
-        const auto   save = [&](const std::string &status) {
-          for (unsigned int i = 0; i < postprocessors.size(); ++i)
-            postprocessor_data[i] = postprocessors[i]->save();
-          save_checkpoint(checkpoint_parts(), status, context);
-        };
-        unsigned int consecutive_cutbacks = 0, steps_this_run = 0,
-                     small_steps = 0;
-        std::string status       = "completed", message, non_finite;
-        // a non-finite failure since the steps fell below the stall floor
-        std::string recent_non_finite;
-        // no progress: steps this small, stall_steps in a row
-        const double stall_floor = stall_step(settings.integrator, nominal);
-        // the state of the last converged step is bad: not written
-        bool bad_state = false;
-        // the physical bound on the platen stress (model/bounds.h)
-        const std::array<double, 2> bound = bound_materials(material, mortar);
-        System::Vector              u_converged(system.u);
-        FloorCorrection             correction({bricks,
-                                                joint_points,
-                                                splitting_points,
-                                                material,
-                                                law,
-                                                splitting_law},
-                                   *integrator,
-                                   *step_control,
-                                   settings.integrator.implex_tolerance,
-                                   context.mpi_communicator,
-                                   pcout);
-        // along the direction: positive displacement is the loading sense
-        while (progress.segment < legs.size())
+        if (!plugins.protocol.description().empty())
+          pcout << plugins.protocol.description() << "\n";
+        Decision   end;
+        bool       bad_state = false;
+        Step       step;
+        const auto interval = settings.output.vtu_interval;
+        const auto every    = settings.checkpoint.checkpoint_interval;
+        while (end.kind != Decision::Kind::stop &&
+               controller->next(curve, step))
           {
-            const Segment &leg = legs[progress.segment];
-            double         next;
-            if (!next_position(
-                  leg, curve, settings.protocol, nominal, progress, next))
+            integrator.set_mode(step.correction ?
+                                  Integrator::Mode::frozen :
+                                  Integrator::Mode::extrapolated);
+            integrator.set_ratio(step.ratio);
+            const StepOutcome outcome = solve(step);
+            statistics.total_newton += outcome.iterations;
+            end = controller->solved(step, outcome);
+            if (end.kind == Decision::Kind::redo)
+              system.u = u_converged;
+            if (end.kind == Decision::Kind::correct)
+              freeze();
+            if (end.kind != Decision::Kind::accept)
+              continue;
+            const unsigned int removed = accept(step, outcome);
+            if (!record_step(step, outcome.iterations, removed))
               {
-                if (progress.segment < legs.size())
-                  step_control->start_leg(legs[progress.segment], progress);
-                continue;
-              }
-            const double applied   = progress.applied;
-            const double taken     = std::abs(next - applied);
-            const double time_step = taken / settings.protocol.platen_speed;
-            // IMPL-EX: no extrapolation across a reversal, at most the
-            // step growth (an unbounded ratio made the cyclic examples run
-            // away: doc/brickwork.md, IMPL-EX; brickwork_implex_ratio)
-            const double ratio = progress.last_increment > 0 &&
-                                     curve.size() > 1 &&
-                                     curve.back().unloading == leg.unloading &&
-                                     curve.back().cycle == leg.cycle ?
-                                   std::min(taken / progress.last_increment,
-                                            settings.protocol.growth) :
-                                   0.;
-            integrator->set_ratio(ratio);
-            step_control->set_leg(leg);
-            // the predictor: the last step's increment scaled to this one
-            // (none after a reversal or a deletion, or in a correction)
-            if (settings.newton.extrapolated_predictor && ratio > 0 &&
-                !correction.active())
-              system.u.add(ratio, system.last_increment);
-            unsigned int its      = 0;
-            double       reaction = 0;
-            std::string  failure;
-            bool         ok = newton.solve_step(system,
-                                        *assembler,
-                                        *solver,
-                                        next,
-                                        time_step,
-                                        progress.largest_reaction,
-                                        its,
-                                        reaction,
-                                        non_finite,
-                                        failure);
-            statistics.total_newton += its;
-            // a converged mechanism is no state of the wallette: a
-            // smaller step, or the run stops (model/deletion.h)
-            if (ok)
-              failure = mechanism_problem(system, specimen);
-            ok = ok && failure.empty();
-            if (!ok && correction.active())
-              {
-                system.u = u_converged;
-                correction.fail(failure, taken, progress);
-                continue;
-              }
-            if (!ok)
-              {
-                system.u = u_converged;
-                ++statistics.total_cutbacks;
-                // a converged step resets the consecutive count, so the
-                // step is also bounded below: otherwise tiny converged
-                // steps between failures halve it without end
-                const double lower_bound =
-                  std::ldexp(nominal, -int(settings.protocol.max_cutbacks));
-                const bool too_many =
-                  ++consecutive_cutbacks > settings.protocol.max_cutbacks;
-                if (too_many || progress.increment < lower_bound)
-                  {
-                    message =
-                      cutback_stop_message({consecutive_cutbacks - 1,
-                                            statistics.total_cutbacks,
-                                            settings.protocol.max_cutbacks,
-                                            too_many,
-                                            lower_bound,
-                                            next,
-                                            taken,
-                                            applied,
-                                            non_finite,
-                                            failure},
-                                           status);
-                    pcout << "Stopped: " << message << "\n";
-                    break;
-                  }
-                if (!non_finite.empty())
-                  recent_non_finite = non_finite;
-                progress.increment /= 2;
-                progress.easy_steps = 0;
-                pcout << "  cut-back: step halved to " << progress.increment
-                      << " m (" << failure << ")\n";
-                continue;
-              }
-            consecutive_cutbacks = 0;
-            const double error = integrator->after_step(*assembler, time_step);
-            if (!std::isfinite(error))
-              {
-                // (std::max would keep a NaN step and the run would go on)
-                system.u = u_converged;
-                status   = "failed";
-                message  = "a number that is not finite (nan or inf) in " +
-                          assembler->non_finite() +
-                          " in the IMPL-EX update after the step to platen "
-                          "displacement " +
-                          Utilities::to_string(next) + " m; check " +
-                          likely_entries(assembler->non_finite()) +
-                          "; results up to the step before are written";
-                pcout << "Stopped: " << message << "\n";
-                break;
-              }
-            if (correction.active())
-              {
-                const FloorCorrection::Next then =
-                  correction.again(taken, progress);
-                if (then == FloorCorrection::Next::redo)
-                  system.u = u_converged;
-                if (then != FloorCorrection::Next::accept)
-                  continue;
-              }
-            else
-              {
-                const Verdict verdict =
-                  step_control->judge(taken, error, progress);
-                if (verdict == Verdict::redo)
-                  {
-                    system.u = u_converged;
-                    pcout << "  IMPL-EX: step redone (damage error " << error
-                          << "), step " << progress.increment << " m\n";
-                    continue;
-                  }
-                if (verdict == Verdict::correct && correction.wanted())
-                  {
-                    correction.start(error, step_control->may_redo(taken));
-                    continue;
-                  }
-              }
-            correction.accepted();
-            accept_step();
-            progress.last_increment = taken;
-            progress.largest_reaction =
-              std::max(progress.largest_reaction, reaction);
-            system.last_increment = system.u;
-            system.last_increment -= u_converged;
-            u_converged = system.u;
-            progress.time += time_step;
-            progress.applied = next;
-            ++progress.step;
-            ++steps_this_run;
-            unsigned int       faded   = 0;
-            const unsigned int removed = delete_cells(settings.specimen,
-                                                      joints,
-                                                      material,
-                                                      bricks,
-                                                      system,
-                                                      specimen,
-                                                      faded);
-            // the deleted cells' DOFs are fixed from now on: no
-            // extrapolation across the change of the structure
-            if (removed > 0)
-              system.last_increment = 0;
-            if (removed > 0 || faded > 0)
-              {
-                assembler->invalidate();
-                solver->forget();
-              }
-            if (!record_step(leg, its, removed, legs.size()))
-              {
-                status    = "failed";
                 bad_state = true;
-                message =
+                end       = Decision::stop(
+                  "failed",
                   "the platen reaction, the gauge strain or a damage is not "
-                  "finite (nan or inf) after the step to platen displacement " +
-                  Utilities::to_string(next) + " m; check " +
-                  likely_entries("bricks") + " and " +
-                  likely_entries("joints") +
-                  "; results up to the step before are written";
-                pcout << "Stopped: " << message << "\n";
+                        "finite (nan or inf) after the step to platen displacement " +
+                    Utilities::to_string(step.to) + " m; check " +
+                    likely_entries("bricks") + " and " +
+                    likely_entries("joints") +
+                    "; results up to the step before are written");
                 break;
               }
-            // a physical end (collapse, status completed) or none: a
-            // solution that ran away (model/bounds.h)
-            const std::string collapse =
-              collapse_problem(curve, settings.protocol.collapse_ratio);
-            const std::string end = !collapse.empty() ?
-                                      collapse :
-                                      runaway_problem(curve.back().stress,
-                                                      curve.back().strain,
-                                                      bound[0],
-                                                      bound[1]);
-            if (!end.empty())
-              {
-                message = end + " (step " + std::to_string(progress.step) +
-                          "); results up to there are written";
-                pcout << "Stopped: " << message << "\n";
-                if (!collapse.empty())
-                  for (auto &pp : postprocessors)
-                    pp->output(*view, progress.step, curve.back().strain);
-                else
-                  status = "failed";
-                break;
-              }
-            small_steps = taken < stall_floor ? small_steps + 1 : 0;
-            if (small_steps == 0)
-              recent_non_finite.clear();
-            if (small_steps >= stall_steps)
-              {
-                message = stall_message(recent_non_finite,
-                                        stall_floor,
-                                        nominal,
-                                        taken,
-                                        next,
-                                        settings.integrator.implex,
-                                        status);
-                pcout << "Stopped: " << message << "\n";
-                break;
-              }
+            end = controller->check_end(step, curve);
+            if (end.kind == Decision::Kind::stop)
+              break;
             // the step that ends the last leg (in a cyclic run an unloading
             // one) writes its state whatever the output interval
-            const bool last =
-              progress.segment + 1 == legs.size() &&
-              leg_done(leg, curve, settings.protocol, nominal, progress);
-            const unsigned int interval = settings.output.vtu_interval;
-            if ((interval > 0 && progress.step % interval == 0) || last)
-              for (auto &pp : postprocessors)
-                pp->output(*view, progress.step, curve.back().strain);
-            step_control->after_step(its, progress);
-            if (settings.checkpoint.checkpoint_interval > 0 &&
-                progress.step % settings.checkpoint.checkpoint_interval == 0)
+            if ((interval > 0 && controller->n_steps() % interval == 0) ||
+                controller->protocol_done(curve))
+              output();
+            controller->grow(outcome.iterations);
+            if (every > 0 && controller->n_steps() % every == 0)
               save("running");
-            if (interrupted(steps_this_run, legs.size(), last))
-              {
-                status  = "interrupted";
-                message = "stopped after `Maximum steps' = " +
-                          std::to_string(settings.protocol.max_steps) +
-                          " steps; `set Resume = true' continues from the "
-                          "checkpoint";
-                pcout << "Stopped: " << message << "\n";
-                break;
-              }
+            end = controller->check_interrupted(curve);
           }
-        if (status != "completed")
+        std::string status = "completed", message;
+        if (end.kind == Decision::Kind::stop)
           {
+            status  = end.status;
+            message = end.message;
+            pcout << "Stopped: " << message << "\n";
             system.u = u_converged;
             if (!bad_state)
               {
-                for (auto &pp : postprocessors)
-                  pp->output(*view, progress.step, curve.back().strain);
-                save(status);
+                output();
+                if (status != "completed")
+                  save(status);
               }
           }
         finish(status,
@@ -710,17 +608,17 @@ namespace masonry
                        const double       seconds)
       {
         Json &summary = context.summary;
-        for (auto &pp : postprocessors)
+        for (auto &pp : plugins.postprocessors)
           pp->finish(*view, summary);
         const MPI_Comm comm = context.mpi_communicator;
         summary["status"]   = status;
         if (!message.empty())
           summary["message"] = message;
         const auto &a                        = assembler->statistics;
-        const auto &s                        = solver->statistics;
-        summary["steps"]                     = progress.step;
+        const auto &s                        = solver.statistics;
+        summary["steps"]                     = controller->n_steps();
         summary["newton_iterations"]         = statistics.total_newton;
-        summary["cut_backs"]                 = statistics.total_cutbacks;
+        summary["cut_backs"]                 = controller->n_cutbacks();
         summary["linear_solves"]             = s.n_solves;
         summary["matrix_assemblies"]         = a.n_matrix_assemblies;
         summary["factorisations_reused"]     = s.n_factorisations_reused;
@@ -731,7 +629,7 @@ namespace masonry
         summary["chord_solves"]              = s.n_chord_solves;
         summary["deleted_cells"]             = specimen.n_deleted;
         summary["direct_solver_fallbacks"]   = s.n_direct_fallbacks;
-        step_control->write_summary(summary);
+        controller->write_summary(summary);
         // share of the evaluations skipped by the elastic check, over all
         // ranks (work skipped where nothing can change)
         const auto elastic_fraction = [&](const unsigned long elastic,
@@ -753,8 +651,8 @@ namespace masonry
               << summary["peak_stress"].as_number() * 1e-6 << " MPa at strain "
               << summary["strain_at_peak"].as_number() << ", initial modulus "
               << summary["initial_modulus"].as_number() * 1e-9 << " GPa; "
-              << progress.step << " steps, " << statistics.total_newton
-              << " Newton iterations, " << statistics.total_cutbacks
+              << controller->n_steps() << " steps, " << statistics.total_newton
+              << " Newton iterations, " << controller->n_cutbacks()
               << " cut-backs";
         if (specimen.n_deleted > 0)
           pcout << ", " << specimen.n_deleted << " cells deleted";
@@ -763,15 +661,14 @@ namespace masonry
     } // namespace
 
     void
-    run_wallette(
-      const std::vector<Box>                                   &boxes,
-      const BrickMaterial                                      &material,
-      const InterfaceLaw                                       &law,
-      const WalletteSettings                                   &settings,
-      std::vector<std::unique_ptr<postprocess::Postprocessor>> &postprocessors,
-      RunContext                                               &context,
-      const InterfaceLaw                                       *splitting_law,
-      const BrickMaterial                                      *mortar_material)
+    run_wallette(const std::vector<Box> &boxes,
+                 const BrickMaterial    &material,
+                 const InterfaceLaw     &law,
+                 const WalletteSettings &settings,
+                 const WallettePlugins  &plugins,
+                 RunContext             &context,
+                 const InterfaceLaw     *splitting_law,
+                 const BrickMaterial    *mortar_material)
     {
       if (!settings.mesh.detailed)
         check_mesh(boxes, settings.mesh);
@@ -791,7 +688,7 @@ namespace masonry
                         splitting_law,
                         settings.mesh.detailed ? mortar_material : nullptr,
                         settings,
-                        postprocessors,
+                        plugins,
                         context);
       wallette.run();
     }

@@ -490,6 +490,15 @@ namespace masonry
     return shorten(text, 2000);
   }
 
+  double
+  positive_entry(dealii::ParameterHandler &prm, const std::string &entry)
+  {
+    const double v = prm.get_double(entry);
+    AssertThrow(v > 0,
+                ExcParameter(entry, "must be positive, got " + prm.get(entry)));
+    return v;
+  }
+
   std::vector<double>
   split_doubles(const std::string &text, const std::string &entry)
   {

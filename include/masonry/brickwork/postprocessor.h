@@ -20,6 +20,35 @@ namespace masonry
 {
   namespace brickwork
   {
+    /** Output files (`Output interval', `Write VTU', `Output format',
+     * `Write plot', `Write CalculiX input'). */
+    struct OutputSettings
+    {
+      /** Write VTU every this many converged steps (0: only the last). */
+      unsigned int vtu_interval = 10;
+      /** Write VTU/PVD at all. */
+      bool write_vtu = true;
+      /** Brick fields as HDF5 + XDMF (solution.xdmf, solution_NNNN.h5)
+       * instead of VTU/PVTU + PVD. */
+      bool hdf5 = false;
+      /** Render curve.png with matplotlib. */
+      bool write_plot = true;
+      /**
+       * Write the mesh and the final platen displacement as a CalculiX
+       * input (calculix.inp) and the computed nodal displacements
+       * (nodal_displacements.csv) in the same numbering.
+       */
+      bool write_calculix = false;
+
+      /** Declare the entries in the present subsection (`subsection
+       * Wallette'). */
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      /** Read them. */
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+    };
+
     namespace postprocess
     {
       /**

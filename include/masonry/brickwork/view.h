@@ -12,7 +12,6 @@
 
 #include <masonry/brickwork/curve.h>
 #include <masonry/brickwork/state.h>
-#include <masonry/brickwork/wallette.h>
 #include <masonry/core/run_context.h>
 
 #include <vector>
@@ -23,6 +22,8 @@ namespace masonry
   {
     class BrickMaterial;
     class InterfaceLaw;
+    class Protocol;
+    struct WalletteSettings;
     namespace model
     {
       struct Geometry;
@@ -31,8 +32,7 @@ namespace masonry
       struct Specimen;
       class InterfaceElement;
       class PointStates;
-      class Protocol;
-      struct Progress;
+      class StepController;
     } // namespace model
 
     /** What a postprocessor may read of a wallette run. */
@@ -61,10 +61,10 @@ namespace masonry
       const model::PointStates &joint_points;
       /** The law of the splitting interfaces through the units (nullptr:
        * none) and their points (4 per face pair, as the joints). */
-      const InterfaceLaw       *splitting_law;
-      const model::PointStates &splitting_points;
-      const model::Protocol    &protocol;
-      const model::Progress    &progress;
+      const InterfaceLaw          *splitting_law;
+      const model::PointStates    &splitting_points;
+      const Protocol              &protocol;
+      const model::StepController &controller;
       /** @} */
 
       /** Whether this is the process that writes the serial files. */

@@ -104,6 +104,13 @@ namespace masonry
   void
   check_parameter_values(dealii::ParameterHandler &prm);
 
+  /**
+   * The value of @p entry of the present subsection of @p prm; throws
+   * ExcParameter naming the entry unless it is positive.
+   */
+  double
+  positive_entry(dealii::ParameterHandler &prm, const std::string &entry);
+
   /** Split a comma-separated list of doubles (e.g. a vector entry). */
   std::vector<double>
   split_doubles(const std::string &text, const std::string &entry);

@@ -58,6 +58,20 @@
  * list does not name them). Names in the default list that are not
  * registered are left out of the default. Plugins of an `Additional shared
  * libraries` file register like the built-in ones and can be listed.
+ *
+ * <h3>Families whose plugins share one subsection</h3>
+ *
+ * A family whose selection entry and plugin entries stand together in one
+ * subsection (the wallette's `Protocol', `Damage integration' and `Linear
+ * solver' in `subsection Wallette', next to the analysis's own entries)
+ * says
+ *
+ * @code
+ *   static constexpr bool shared_subsection = true;
+ * @endcode
+ *
+ * Its plugins then declare and parse their entries in the family's
+ * subsection itself, not in one of their own; their names must not clash.
  */
 #ifndef masonry_core_plugins_h
 #define masonry_core_plugins_h
@@ -143,6 +157,17 @@ namespace masonry
       struct IsMultiple<Interface,
                         std::void_t<decltype(Interface::multiple_selection)>>
         : std::integral_constant<bool, Interface::multiple_selection>
+      {};
+
+      /** Whether @p Interface declares `shared_subsection = true`. */
+      template <class Interface, class = void>
+      struct IsShared : std::false_type
+      {};
+
+      template <class Interface>
+      struct IsShared<Interface,
+                      std::void_t<decltype(Interface::shared_subsection)>>
+        : std::integral_constant<bool, Interface::shared_subsection>
       {};
 
       /** Whether @p Interface has `required_plugins() const`. */
@@ -297,11 +322,14 @@ namespace masonry
           }
         Interface::declare_common_parameters(prm);
         for (const auto &e : list)
-          {
-            prm.enter_subsection(section_name(e.name));
+          if constexpr (internal::IsShared<Interface>::value)
             e.declare(prm);
-            prm.leave_subsection();
-          }
+          else
+            {
+              prm.enter_subsection(section_name(e.name));
+              e.declare(prm);
+              prm.leave_subsection();
+            }
         leave_path(prm, levels);
       }
 
@@ -431,7 +459,8 @@ namespace masonry
                 leave_path(prm, levels);
               }
               std::string path = section;
-              path += (path.empty() ? "" : "/") + section_name(name);
+              if constexpr (!internal::IsShared<Interface>::value)
+                path += (path.empty() ? "" : "/") + section_name(name);
               const unsigned int levels = enter_path(prm, path);
               {
                 ParsePathScope scope(path);

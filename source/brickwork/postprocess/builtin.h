@@ -8,7 +8,7 @@
 
 #include <masonry/brickwork/postprocessor.h>
 
-#include "../model/view.h"
+#include "view.h"
 
 namespace masonry
 {

@@ -64,7 +64,7 @@ namespace masonry
           const double  height = view.geometry.height;
           const double  tol    = 1e-9 * height;
           const auto   &dir    = settings.platen.direction;
-          const double  target = settings.protocol.target_displacement;
+          const double  target = view.protocol.target_displacement();
           const bool    fixed  = settings.platen.lateral_fixed;
           std::ofstream out(inp);
           // CalculiX reads fields of at most 20 characters

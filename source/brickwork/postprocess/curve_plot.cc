@@ -33,8 +33,7 @@ namespace masonry
           {
             // the pictures are named as files of this run only once drawn:
             // a file named but not written makes the run `failed'
-            const bool cyclic =
-              !view.settings.protocol.cycle_amplitudes.empty();
+            const bool cyclic = view.protocol.is_cyclic();
             if (dealii::Utilities::MPI::this_mpi_process(view.system.comm) != 0)
               return;
             const std::string why =

@@ -152,7 +152,7 @@ namespace masonry
             const double modulus = curve.size() > 1 && curve[1].strain != 0 ?
                                      curve[1].stress / curve[1].strain :
                                      0.;
-            if (!view.settings.protocol.cycle_amplitudes.empty())
+            if (view.protocol.is_cyclic())
               write_cycles(view, modulus, summary);
             write_summary(view, modulus, summary);
           }
@@ -222,8 +222,7 @@ namespace masonry
               }
             // envelope (first cycle at each amplitude), stability point
             // (last cycle) and common point
-            const unsigned int n_rep =
-              view.settings.protocol.cycles_per_amplitude;
+            const unsigned int n_rep = view.protocol.cycles_per_amplitude();
             if (root)
               {
                 std::ofstream out(dir + "/envelope.csv");

@@ -20,8 +20,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "../model/deletion.h"
-#include "../model/one_thread.h"
+#include "../assembly/one_thread.h"
+#include "../solution/deletion.h"
 #include "builtin.h"
 
 namespace masonry
@@ -117,12 +117,12 @@ namespace masonry
           names.insert(names.end(), reported.begin(), reported.end());
           const unsigned int first_reported = 7;
           const bool         fading =
-            view.settings.specimen.deletion_strain > 0 &&
-            (view.settings.specimen.deletion_fade_opening > 0 ||
-             view.settings.specimen.deletion_crushing_length > 0);
+            view.settings.deletion.deletion_strain > 0 &&
+            (view.settings.deletion.deletion_fade_opening > 0 ||
+             view.settings.deletion.deletion_crushing_length > 0);
           if (fading)
             names.emplace_back("fade");
-          if (view.settings.specimen.deletion_strain > 0)
+          if (view.settings.deletion.deletion_strain > 0)
             names.emplace_back("deleted");
           // the detailed model: 0 unit, 1 mortar
           const bool regions = view.settings.mesh.detailed;
@@ -146,7 +146,7 @@ namespace masonry
                 fields[6][c]         = cell->subdomain_id();
                 if (regions)
                   fields.back()[c] = view.specimen.cell_region[c];
-                if (view.settings.specimen.deletion_strain > 0)
+                if (view.settings.deletion.deletion_strain > 0)
                   fields[names.size() - 1 - regions][c] =
                     view.specimen.deleted[c];
                 if (fading)

@@ -8,6 +8,63 @@ namespace masonry
 {
   namespace brickwork
   {
+    void
+    OutputSettings::declare_parameters(dealii::ParameterHandler &prm)
+    {
+      using dealii::Patterns::Bool;
+      using dealii::Patterns::Integer;
+      using dealii::Patterns::Selection;
+      prm.declare_entry("Output interval",
+                        "10",
+                        Integer(0, 100000),
+                        "Write VTU/PVTU (bricks) and VTU (interfaces) "
+                        "every this many converged steps, and after the "
+                        "last; 0: only the initial and the last state.");
+      prm.declare_entry("Write VTU",
+                        "true",
+                        Bool(),
+                        "Write the VTU/PVTU/PVD time series "
+                        "(solution.pvd: displacement in m, stress in Pa, "
+                        "MPI subdomain; interfaces.pvd: damage, normal "
+                        "opening and slip in m, joint type).");
+      prm.declare_entry(
+        "Output format",
+        "vtu",
+        Selection("vtu|hdf5"),
+        "Format of the brick fields when `Write VTU' is true: `vtu' "
+        "writes solution.pvd with solution_NNNN.pvtu and one .vtu per "
+        "rank; `hdf5' writes solution.xdmf with one solution_NNNN.h5 per "
+        "output step (mesh and fields, written in parallel by all ranks; "
+        "open solution.xdmf in ParaView with the XDMF reader). The "
+        "interfaces are written as interfaces.pvd / interfaces_NNNN.vtu in "
+        "both cases.");
+      prm.declare_entry("Write plot",
+                        "true",
+                        Bool(),
+                        "Draw the stress-strain curve into curve.png "
+                        "(matplotlib, /usr/bin/python3).");
+      prm.declare_entry(
+        "Write CalculiX input",
+        "false",
+        Bool(),
+        "Also write calculix.inp (the mesh as C3D8 elements, the brick "
+        "material, the platen conditions and the final platen displacement "
+        "as one linear static step, for `ccx -i calculix') and "
+        "nodal_displacements.csv (this run's final displacements, m, in "
+        "the same node numbering). Needs `Joints = bonded' and an elastic "
+        "brick material.");
+    }
+
+    void
+    OutputSettings::parse_parameters(dealii::ParameterHandler &prm)
+    {
+      vtu_interval   = prm.get_integer("Output interval");
+      write_vtu      = prm.get_bool("Write VTU");
+      hdf5           = prm.get("Output format") == "hdf5";
+      write_plot     = prm.get_bool("Write plot");
+      write_calculix = prm.get_bool("Write CalculiX input");
+    }
+
     namespace postprocess
     {
       const char *
