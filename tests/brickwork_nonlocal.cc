@@ -1,6 +1,6 @@
 /**
  * The nonlocal average of the units' tensile measure (`Nonlocal length',
- * source/brickwork/model/nonlocal.h) against closed forms:
+ * source/brickwork/assembly/nonlocal.h) against closed forms:
  *
  * (a) the average alone, on a grid of 11 x 11 x 11 points 5 mm apart with
  *     equal volumes, R = 20 mm: a uniform field is unchanged at every point

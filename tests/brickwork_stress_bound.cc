@@ -1,6 +1,6 @@
 /**
  * The physical bound on a wallette's platen stress that stops a run whose
- * solution has run away (source/brickwork/model/bounds.h):
+ * solution has run away (source/brickwork/solution/bounds.h):
  *
  * (a) an elastic prism under constrained uniaxial strain e carries exactly
  *     M e, M = E (1 - nu) / ((1 + nu) (1 - 2 nu)) (the stiffest a wallette

@@ -49,7 +49,7 @@ namespace masonry
       const std::vector<CurvePoint> &curve;
 
       /** @name The parts of the model (private headers in
-       * source/brickwork/model/) */
+       * source/brickwork/specimen, assembly and solution) */
       /** @{ */
       const model::Geometry         &geometry;
       const model::System           &system;

@@ -105,8 +105,7 @@ namespace masonry
           "bit with any number of threads. More threads shorten the "
           "assembly, some 40 % of the CPU time of a detailed wallette, on "
           "idle cores; on cores shared with other jobs they cost CPU time "
-          "and gain little wall time (contrib/benchmarks/wallette_cyclic/"
-          "results-2026-11-25b.md).");
+          "and gain little wall time (doc/notes/wallette-solver-speed.md).");
       }
 
       void

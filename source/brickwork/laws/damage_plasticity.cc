@@ -278,7 +278,7 @@ namespace masonry
     {
       // damages and plastic strain extrapolated and frozen; with `IMPL-EX
       // crack opening' = frozen the cracks' opening (crack_strain) is only
-      // frozen: extrapolated, it fed itself (doc/brickwork.md, Stabilisation)
+      // frozen: extrapolated, it fed itself (doc/notes/implex-step-control.md)
       auto extrapolate = [&](const double d, const double d_older) {
         return std::clamp(d + ratio_t * (d - d_older), d, d_max);
       };

@@ -117,7 +117,8 @@ namespace masonry
        * not a state of the wallette. Not 100 %: the squeezed mortar of a
        * weak joint flows steadily to 100 % at a nominal strain of 0.015
        * (tests/brickwork_detailed_band), while the runaway of the double
-       * cyclic example grows by 15-25 % a step (doc/brickwork.md).
+       * cyclic example grows by 15-25 % a step
+       * (doc/notes/implex-step-control.md).
        */
       constexpr double mechanism_strain = 10;
 

@@ -80,7 +80,7 @@ namespace masonry
           "as the tolerance, where Newton from the constant start usually "
           "lands far below it, and past the peak of the cyclic examples "
           "that moved the collapse of the wall by a cycle "
-          "(contrib/benchmarks/wallette_cyclic/results-2026-11-24c.md): "
+          "(doc/notes/wallette-solver-speed.md): "
           "`constant' is the default.");
         prm.declare_entry(
           "Newton chord contraction",

@@ -110,7 +110,8 @@ namespace masonry
           "there takes fewer steps. Too large a floor lags the damage of "
           "the unloading and moves the next cycle's peak: in the single "
           "cyclic example 0.25 keeps the cycle peaks within 0.03 %, 0.5 "
-          "moved one by +3.3 % (doc/brickwork.md, Benchmark).");
+          "moved one by +3.3 % "
+          "(contrib/benchmarks/wallette_cyclic/README.md).");
         prm.declare_entry(
           "IMPL-EX floor correction",
           "accept",
@@ -134,8 +135,8 @@ namespace masonry
           "whose solve fails, is redone smaller, and at the floor it is "
           "corrected as by `iterate' (fewer, larger steps where the damage "
           "error comes from points that start to soften, which smaller "
-          "steps do not remove; doc/brickwork.md, IMPL-EX floor "
-          "correction). Both need `Nonlocal length' = 0.");
+          "steps do not remove; doc/notes/implex-step-control.md). Both "
+          "need `Nonlocal length' = 0.");
       }
 
       void
@@ -232,7 +233,7 @@ namespace masonry
             step.correction = correcting;
             // IMPL-EX: no extrapolation across a reversal, at most the step
             // growth (an unbounded ratio made the cyclic examples run
-            // away: doc/brickwork.md, IMPL-EX; brickwork_implex_ratio)
+            // away: doc/notes/implex-step-control.md; brickwork_implex_ratio)
             step.ratio =
               last_increment > 0 && curve.size() > 1 &&
                   curve.back().unloading == leg.unloading &&

@@ -209,7 +209,7 @@ namespace masonry
             // the tangent singular there. Without it, MUMPS factorised
             // the round-off and the corrections moved such parts
             // arbitrarily far, so Newton stalled at the joints' contact
-            // switches (doc/brickwork.md, Stabilisation)
+            // switches (doc/notes/implex-step-control.md)
             mumps->SetICNTL(24, 1);
           }
         int result = 0;
