@@ -3,6 +3,7 @@
 #include <masonry/core/application.h>
 #include <masonry/core/json.h>
 #include <masonry/core/output_directory.h>
+#include <masonry/core/output_file.h>
 #include <masonry/core/parameters.h>
 #include <masonry/core/plugins.h>
 #include <masonry/core/usage.h>
@@ -330,11 +331,16 @@ namespace masonry
                     summary.erase(b.substr(0, cut));
                 }
             }
-          std::ofstream out(output.path() + "summary.json");
-          out << summary.dump() << "\n";
-          out.close();
-          if (!out)
-            error = "cannot write '" + output.path() + "summary.json'";
+          try
+            {
+              OutputFile out(output.path() + "summary.json");
+              out << summary.dump() << "\n";
+              out.close();
+            }
+          catch (const std::exception &exc)
+            {
+              error = one_line_message(exc);
+            }
         }
       return dealii::Utilities::MPI::broadcast(comm, error, 0);
     }
@@ -363,7 +369,7 @@ namespace masonry
       if (!missing.empty())
         return "result files could not be written: " + join(missing);
       if (!log.good())
-        return "cannot write '" + output.path() + "log.txt'";
+        return log.error();
       return {};
     }
 
@@ -389,6 +395,9 @@ namespace masonry
 
       Log log(comm);
       log.open_file(output.file("log.txt"));
+      const std::string log_error =
+        dealii::Utilities::MPI::broadcast(comm, log.error(), 0);
+      AssertThrow(log_error.empty(), dealii::ExcMessage(log_error));
       dealii::ConditionalOStream pcout(log.stream(), true);
 
       pcout << "masonry " << MASONRY_VERSION << ": " << prm.get("Analysis")
@@ -401,11 +410,23 @@ namespace masonry
         pcout << "  (holds an earlier run: the files this run writes are "
                  "overwritten, the others are left alone)\n";
 
+      // rank 0 writes; every rank learns of a failure (no rank may go on
+      // into the analysis' collective operations alone)
+      std::string       prm_error;
+      const std::string used_name = output.file("parameters.prm");
       if (root)
-        {
-          std::ofstream used(output.file("parameters.prm"));
-          prm.print_parameters(used, dealii::ParameterHandler::ShortPRM);
-        }
+        try
+          {
+            OutputFile used(used_name);
+            prm.print_parameters(used, dealii::ParameterHandler::ShortPRM);
+            used.close();
+          }
+        catch (const std::exception &exc)
+          {
+            prm_error = one_line_message(exc);
+          }
+      prm_error = dealii::Utilities::MPI::broadcast(comm, prm_error, 0);
+      AssertThrow(prm_error.empty(), dealii::ExcMessage(prm_error));
 
       Json summary               = Json::object();
       summary["analysis"]        = prm.get("Analysis");
@@ -441,6 +462,11 @@ namespace masonry
              "; " + summary_error) +
           "]");
       };
+
+      // a run that is killed leaves a summary.json that says so (status
+      // `running', not complete) rather than an earlier run's
+      const std::string start_problem = write_summary();
+      AssertThrow(start_problem.empty(), dealii::ExcMessage(start_problem));
 
       RunContext context{comm, pcout, output, summary};
       try

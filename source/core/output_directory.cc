@@ -1,5 +1,6 @@
 #include <masonry/core/json.h>
 #include <masonry/core/output_directory.h>
+#include <masonry/core/output_file.h>
 #include <masonry/core/parameters.h>
 
 #include <deal.II/base/exceptions.h>
@@ -7,6 +8,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <sstream>
 #include <streambuf>
@@ -212,6 +214,16 @@ namespace masonry
   Log::~Log()
   {
     out->flush();
+    if (file != nullptr)
+      try
+        {
+          // written in place: renames nothing, removes an incomplete log
+          file->close();
+        }
+      catch (...)
+        {
+          // the run has said why (error()); a destructor must not throw
+        }
   }
 
   std::ostream &
@@ -224,9 +236,18 @@ namespace masonry
   Log::good() const
   {
     if (file == nullptr)
-      return true;
+      return open_error.empty();
     file->flush();
-    return file->is_open() && file->good();
+    return file->good();
+  }
+
+  std::string
+  Log::error() const
+  {
+    if (file == nullptr)
+      return open_error;
+    file->flush();
+    return file->error();
   }
 
   void
@@ -234,7 +255,16 @@ namespace masonry
   {
     if (buffer->screen == nullptr)
       return;
-    file         = std::make_unique<std::ofstream>(filename);
+    try
+      {
+        file = std::make_unique<OutputFile>(filename, true);
+      }
+    catch (const std::exception &exc)
+      {
+        // said by error(): the caller decides with every rank what to do
+        open_error = one_line_message(exc);
+        return;
+      }
     buffer->file = file->rdbuf();
   }
 } // namespace masonry

@@ -7,7 +7,6 @@
 
 #include <deal.II/base/mpi.h>
 
-#include <fstream>
 #include <memory>
 #include <ostream>
 #include <string>
@@ -15,6 +14,8 @@
 
 namespace masonry
 {
+  class OutputFile;
+
   /**
    * The directory a run writes into. It is created if missing (with its
    * parents) and checked for writing; files are named through file(), which
@@ -91,15 +92,24 @@ namespace masonry
     bool
     good() const;
 
+    /**
+     * Why log.txt could not be written ("cannot write '...': REASON"), or
+     * "". A log.txt that could not be written whole is removed when the Log
+     * is destroyed.
+     */
+    std::string
+    error() const;
+
     /** Start copying everything written from now on to @p filename. */
     void
     open_file(const std::string &filename);
 
   private:
     class TeeBuffer;
-    std::unique_ptr<std::ofstream> file;
-    std::unique_ptr<TeeBuffer>     buffer;
-    std::unique_ptr<std::ostream>  out;
+    std::unique_ptr<OutputFile>   file;
+    std::unique_ptr<TeeBuffer>    buffer;
+    std::unique_ptr<std::ostream> out;
+    std::string                   open_error;
   };
 } // namespace masonry
 
