@@ -23,12 +23,20 @@
 #include <iostream>
 #include <map>
 #include <sstream>
+#include <thread>
 
 namespace masonry
 {
   namespace
   {
     const char *usage = usage_text;
+
+    /**
+     * How long (s) a rank whose analysis threw waits for the others to
+     * throw as well before it takes the error for its own and ends every
+     * rank: an error every rank sees is met within milliseconds.
+     */
+    constexpr double rank_error_wait = 10;
 
     /** Declare the driver's own top-level entries. */
     void
@@ -295,54 +303,94 @@ namespace masonry
     }
 
     /**
-     * Write summary.json: its file list, the non-finite results removed and
-     * named (JSON has no NaN). Rank 0 writes; returns "" or why it failed
-     * (on every rank).
+     * Write summary.json on this rank: its file list, the non-finite results
+     * removed and named (JSON has no NaN). Returns "" or why it failed.
      */
     std::string
-    write_summary_file(Json            &summary,
-                       OutputDirectory &output,
-                       const MPI_Comm   comm)
+    write_summary_here(Json &summary, OutputDirectory &output)
     {
       output.file("summary.json");
       Json files = Json::array();
       for (const auto &f : output.files())
         files.push_back(f);
       summary["files"] = files;
-      std::string error;
-      if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
+      const auto bad   = summary.non_finite_members();
+      if (!bad.empty())
         {
-          const auto bad = summary.non_finite_members();
-          if (!bad.empty())
+          Json list = Json::array();
+          for (const auto &b : bad)
             {
-              Json list = Json::array();
-              for (const auto &b : bad)
-                {
-                  list.push_back(b);
-                  if (b.find_first_of("/[") == std::string::npos)
-                    summary.erase(b);
-                }
-              summary["non_finite_results"] = list;
-              // nested ones: drop the whole member holding them
-              for (const auto &b : bad)
-                {
-                  const auto cut = b.find_first_of("/[");
-                  if (cut != std::string::npos)
-                    summary.erase(b.substr(0, cut));
-                }
+              list.push_back(b);
+              if (b.find_first_of("/[") == std::string::npos)
+                summary.erase(b);
             }
-          try
+          summary["non_finite_results"] = list;
+          // nested ones: drop the whole member holding them
+          for (const auto &b : bad)
             {
-              OutputFile out(output.path() + "summary.json");
-              out << summary.dump() << "\n";
-              out.close();
-            }
-          catch (const std::exception &exc)
-            {
-              error = one_line_message(exc);
+              const auto cut = b.find_first_of("/[");
+              if (cut != std::string::npos)
+                summary.erase(b.substr(0, cut));
             }
         }
+      try
+        {
+          OutputFile out(output.path() + "summary.json");
+          out << summary.dump() << "\n";
+          out.close();
+        }
+      catch (const std::exception &exc)
+        {
+          return one_line_message(exc);
+        }
+      return {};
+    }
+
+    /**
+     * Write summary.json (rank 0); returns "" or why it failed, on every
+     * rank.
+     */
+    std::string
+    write_summary_file(Json            &summary,
+                       OutputDirectory &output,
+                       const MPI_Comm   comm)
+    {
+      std::string error;
+      if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
+        error = write_summary_here(summary, output);
+      else
+        output.file("summary.json");
       return dealii::Utilities::MPI::broadcast(comm, error, 0);
+    }
+
+    /**
+     * Whether every rank of @p error_comm reaches this call within
+     * @p seconds: a rank whose analysis threw calls it, and if the others
+     * threw too (an error every rank sees), they meet here. A rank whose
+     * error the others did not see finds them still computing, or waiting in
+     * one of the analysis' collective operations that this rank will never
+     * join; it must end the run for all (MPI_Abort) instead of waiting.
+     * @p error_comm is a duplicate of the run's communicator used for nothing
+     * else, so that this barrier cannot match any other collective call.
+     */
+    bool
+    all_ranks_failed(const MPI_Comm error_comm, const double seconds)
+    {
+      if (dealii::Utilities::MPI::n_mpi_processes(error_comm) == 1)
+        return true;
+      MPI_Request request;
+      MPI_Ibarrier(error_comm, &request);
+      const auto until = std::chrono::steady_clock::now() +
+                         std::chrono::duration<double>(seconds);
+      int done = 0;
+      while (!done)
+        {
+          MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+          if (done || std::chrono::steady_clock::now() > until)
+            break;
+          std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        }
+      return done != 0;
     }
 
     /**
@@ -469,14 +517,42 @@ namespace masonry
       AssertThrow(start_problem.empty(), dealii::ExcMessage(start_problem));
 
       RunContext context{comm, pcout, output, summary};
+      MPI_Comm   error_comm =
+        dealii::Utilities::MPI::duplicate_communicator(comm);
       try
         {
           analysis->run(context);
         }
       catch (const std::exception &exc)
         {
-          fail("error", one_line_message(exc));
+          const std::string message = one_line_message(exc);
+          if (!all_ranks_failed(error_comm, rank_error_wait))
+            {
+              // an error of this rank alone: the others cannot be told, so
+              // this rank says why, records it and ends every rank
+              const unsigned int rank =
+                dealii::Utilities::MPI::this_mpi_process(comm);
+              const std::string text =
+                "rank " + std::to_string(rank) + " of " +
+                std::to_string(dealii::Utilities::MPI::n_mpi_processes(comm)) +
+                ": " + message;
+              summary["status"]   = "error";
+              summary["complete"] = false;
+              summary["error"]    = text;
+              const std::string summary_error =
+                write_summary_here(summary, output);
+              std::cerr << "masonry: error: " << text << " [the results in "
+                        << output.path() << " are incomplete"
+                        << (summary_error.empty() ?
+                              "; summary.json has status 'error'" :
+                              "; " + summary_error)
+                        << "; every rank is stopped]" << std::endl;
+              MPI_Abort(comm, 1);
+            }
+          dealii::Utilities::MPI::free_communicator(error_comm);
+          fail("error", message);
         }
+      dealii::Utilities::MPI::free_communicator(error_comm);
       if (summary.at("status").as_string() == "running")
         summary["status"] = "completed";
       const std::string status = summary.at("status").as_string();
