@@ -4,8 +4,8 @@
  */
 #include <masonry/core/output_directory.h>
 #include <masonry/core/output_file.h>
+#include <masonry/core/vtu_grid.h>
 #include <masonry/rigid_blocks/postprocess/interface.h>
-#include <masonry/rigid_blocks/postprocess/vtu.h>
 
 
 namespace masonry
