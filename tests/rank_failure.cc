@@ -54,10 +54,10 @@ main(int argc, char **argv)
   std::cout << "the error names the rank and the cause: "
             << (err.find(expected) != std::string::npos ? "yes" : "no") << "\n";
   const masonry::Json summary =
-    masonry::Json::parse(testing::read_file("results/summary.json"));
-  std::cout << "summary.json: status " << summary.at("status").as_string()
+    masonry::parse_json(testing::read_file("results/summary.json"));
+  std::cout << "summary.json: status " << summary.at("status").get<std::string>()
             << ", complete "
-            << (summary.at("complete").as_bool() ? "yes" : "no") << "\n";
+            << (summary.at("complete").get<bool>() ? "yes" : "no") << "\n";
   if (code == 0 || seconds >= 30)
     {
       std::cout << "--- child stderr\n"

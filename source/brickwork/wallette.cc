@@ -750,9 +750,9 @@ namespace masonry
         summary["seconds_assembly"] = a.seconds;
         summary["seconds_solve"]    = s.seconds;
         pcout << "Result: peak stress " << std::setprecision(6)
-              << summary["peak_stress"].as_number() * 1e-6 << " MPa at strain "
-              << summary["strain_at_peak"].as_number() << ", initial modulus "
-              << summary["initial_modulus"].as_number() * 1e-9 << " GPa; "
+              << summary["peak_stress"].get<double>() * 1e-6 << " MPa at strain "
+              << summary["strain_at_peak"].get<double>() << ", initial modulus "
+              << summary["initial_modulus"].get<double>() * 1e-9 << " GPa; "
               << progress.step << " steps, " << statistics.total_newton
               << " Newton iterations, " << statistics.total_cutbacks
               << " cut-backs";

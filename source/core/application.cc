@@ -303,8 +303,8 @@ namespace masonry
     }
 
     /**
-     * Write summary.json on this rank: its file list, the non-finite results
-     * removed and named (JSON has no NaN). Returns "" or why it failed.
+     * Write summary.json on this rank, with its file list. Returns "" or why
+     * it failed.
      */
     std::string
     write_summary_here(Json &summary, OutputDirectory &output)
@@ -314,29 +314,10 @@ namespace masonry
       for (const auto &f : output.files())
         files.push_back(f);
       summary["files"] = files;
-      const auto bad   = summary.non_finite_members();
-      if (!bad.empty())
-        {
-          Json list = Json::array();
-          for (const auto &b : bad)
-            {
-              list.push_back(b);
-              if (b.find_first_of("/[") == std::string::npos)
-                summary.erase(b);
-            }
-          summary["non_finite_results"] = list;
-          // nested ones: drop the whole member holding them
-          for (const auto &b : bad)
-            {
-              const auto cut = b.find_first_of("/[");
-              if (cut != std::string::npos)
-                summary.erase(b.substr(0, cut));
-            }
-        }
       try
         {
           OutputFile out(output.path() + "summary.json");
-          out << summary.dump() << "\n";
+          out << summary.dump(2) << "\n";
           out.close();
         }
       catch (const std::exception &exc)
@@ -403,11 +384,6 @@ namespace masonry
                    const Log                             &log,
                    const std::filesystem::file_time_type &file_start)
     {
-      const auto bad = summary.non_finite_members();
-      if (!bad.empty())
-        return "the result '" + bad.front() +
-               "' is not a finite number (a value out of its physical range "
-               "in the parameter file?)";
       const auto csv = non_finite_in_csv(output);
       if (!csv.empty())
         return "non-finite numbers (nan/inf) in " + join(csv) +
@@ -525,7 +501,23 @@ namespace masonry
         }
       catch (const std::exception &exc)
         {
-          const std::string message = one_line_message(exc);
+          std::string message = one_line_message(exc);
+          std::string status  = "error";
+          if (dynamic_cast<const NonFiniteJsonNumber *>(&exc) != nullptr)
+            {
+              // the member it was meant for was created (null) before the
+              // value failed: name it, and leave it out of summary.json
+              const std::string path = first_null_member(summary);
+              if (!path.empty())
+                {
+                  summary.erase(path.substr(0, path.find_first_of("/[")));
+                  summary["non_finite_results"] = Json::array({path});
+                }
+              message = "the result '" + (path.empty() ? "?" : path) +
+                        "' is not a finite number (a value out of its "
+                        "physical range in the parameter file?)";
+              status = "failed";
+            }
           if (!all_ranks_failed(error_comm, rank_error_wait))
             {
               // an error of this rank alone: the others cannot be told, so
@@ -536,7 +528,7 @@ namespace masonry
                 "rank " + std::to_string(rank) + " of " +
                 std::to_string(dealii::Utilities::MPI::n_mpi_processes(comm)) +
                 ": " + message;
-              summary["status"]   = "error";
+              summary["status"]   = status;
               summary["complete"] = false;
               summary["error"]    = text;
               const std::string summary_error =
@@ -544,26 +536,26 @@ namespace masonry
               std::cerr << "masonry: error: " << text << " [the results in "
                         << output.path() << " are incomplete"
                         << (summary_error.empty() ?
-                              "; summary.json has status 'error'" :
+                              "; summary.json has status '" + status + "'" :
                               "; " + summary_error)
                         << "; every rank is stopped]" << std::endl;
               MPI_Abort(comm, 1);
             }
           dealii::Utilities::MPI::free_communicator(error_comm);
-          fail("error", message);
+          fail(status, message);
         }
       dealii::Utilities::MPI::free_communicator(error_comm);
-      if (summary.at("status").as_string() == "running")
+      if (summary.at("status").get<std::string>() == "running")
         summary["status"] = "completed";
-      const std::string status = summary.at("status").as_string();
+      const std::string status = summary.at("status").get<std::string>();
       if (is_failure(status))
         {
           // the analysis' own words on why there is no result
           std::string why;
           for (const char *key : {"explanation", "message"})
             if (why.empty() && summary.contains(key) &&
-                summary.at(key).type() == Json::Type::string)
-              why = ": " + summary.at(key).as_string();
+                summary.at(key).is_string())
+              why = ": " + summary.at(key).get<std::string>();
           summary["analysis_status"] = status;
           fail("failed",
                "the analysis ended with status '" + status + "'" + why +
@@ -586,11 +578,11 @@ namespace masonry
       if (!stale.empty())
         pcout << "Note: files of an earlier run left in " << output.path()
               << " (not written by this run): " << join(stale) << "\n";
-      pcout << "Status: " << summary.at("status").as_string() << "\n"
+      pcout << "Status: " << summary.at("status").get<std::string>() << "\n"
             << "Results: " << output.path() << " ("
             << join_series(output.files()) << ")\n"
             << "Wall time: " << std::fixed << std::setprecision(2)
-            << summary.at("wall_seconds").as_number() << " s\n";
+            << summary.at("wall_seconds").get<double>() << " s\n";
       return 0;
     }
   } // namespace

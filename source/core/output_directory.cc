@@ -62,12 +62,12 @@ namespace masonry
                 text << old.rdbuf();
                 try
                   {
-                    const Json summary = Json::parse(text.str());
+                    const Json summary = parse_json(text.str());
                     if (summary.contains("files"))
                       for (std::size_t i = 0; i < summary.at("files").size();
                            ++i)
                         previous.push_back(
-                          summary.at("files").at(i).as_string());
+                          summary.at("files").at(i).get<std::string>());
                   }
                 catch (...)
                   {

@@ -76,7 +76,7 @@ namespace masonry
             run_script("vault_picture.py",
                        {dir.path() + "blocks.vtu",
                         dir.path() + "vault.png",
-                        xml_escape(context.summary.at("analysis").as_string()),
+                        xml_escape(context.summary.at("analysis").get<std::string>()),
                         "--amplification",
                         amplification.str()});
           if (why.empty())
