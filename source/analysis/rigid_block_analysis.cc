@@ -384,7 +384,8 @@ namespace masonry
             const std::string dir = context.output.path();
             const std::string why =
               run_script("adaptation_plot.py",
-                         {dir + "adaptation.csv", dir + "adaptation.png"});
+                         {dir + "adaptation.csv", dir + "adaptation.png"},
+                         {dir + "adaptation.png"});
             if (why.empty())
               context.output.file("adaptation.png");
             else

@@ -232,7 +232,9 @@ namespace masonry
           s["cells_damage_over_half"] = double(n_damaged);
 
           const std::string why =
-            run_script("wallette_failure.py", {view.context.output.path()});
+            run_script("wallette_failure.py",
+                       {view.context.output.path()},
+                       {view.context.output.path() + "failure.png"});
           if (why.empty()) // named as a file of the run only once drawn
             view.context.output.file("failure.png");
           else
