@@ -7,17 +7,22 @@
 # so nothing is left mounted); where mounting is not allowed, a file-size
 # limit (ulimit -f, with SIGXFSZ ignored) stands in for it, and the reason is
 # then "File too large".
-# Usage: full_disk.sh MASONRY WORK_DIR EXAMPLE_PRM [FRACTIONS...]
+# Usage: full_disk.sh MASONRY WORK_DIR EXAMPLE_PRM [APPENDED_PRM]
+# (APPENDED_PRM: lines appended to the example, e.g. a shorter run)
 set -euo pipefail
 masonry=$1
 work=$2
 example=$3
-shift 3
-fractions=("${@:-0.02 0.1 0.3 0.5 0.7 0.9}")
-read -r -a fractions <<<"${fractions[*]}"
+appended=${4:-}
+fractions=(0.02 0.1 0.3 0.5 0.7 0.9)
 rm -rf "$work"
 mkdir -p "$work"
 cd "$work"
+cp "$example" example.prm
+if [[ -n "$appended" ]]; then
+  cat "$appended" >>example.prm
+fi
+example=$work/example.prm
 
 prm() { # output directory
   cp "$example" run.prm

@@ -12,6 +12,8 @@
 #include <iostream>
 #include <sstream>
 #include <streambuf>
+#include <sys/resource.h>
+#include <sys/statvfs.h>
 
 namespace masonry
 {
@@ -150,6 +152,27 @@ namespace masonry
   OutputDirectory::had_previous_run() const
   {
     return previous_run;
+  }
+
+  void
+  throw_if_any_rank_failed(const std::string &error, const MPI_Comm comm)
+  {
+    for (const auto &e : dealii::Utilities::MPI::all_gather(comm, error))
+      AssertThrow(e.empty(), dealii::ExcMessage(e));
+  }
+
+  std::string
+  likely_write_reason(const std::string &directory, const std::string &fallback)
+  {
+    struct statvfs fs;
+    if (::statvfs(directory.c_str(), &fs) == 0 && fs.f_bavail == 0)
+      return "No space left on device";
+    struct rlimit limit;
+    if (::getrlimit(RLIMIT_FSIZE, &limit) == 0 &&
+        limit.rlim_cur != RLIM_INFINITY)
+      return "File too large (a file-size limit of " +
+             std::to_string(limit.rlim_cur) + " bytes)";
+    return fallback;
   }
 
   /** A stream buffer writing to the screen and, once opened, to a file. */

@@ -75,6 +75,23 @@ namespace masonry
   };
 
   /**
+   * For files that every rank writes a share of: throws on every rank the
+   * first non-empty @p error of any rank (in rank order), so that a write
+   * that failed on one rank stops all of them together. Collective.
+   */
+  void
+  throw_if_any_rank_failed(const std::string &error, const MPI_Comm comm);
+
+  /**
+   * The likely reason why a library that does not say (HDF5) could not write
+   * into @p directory: "No space left on device" if the file system is
+   * full, "File too large" under a file-size limit, else @p fallback.
+   */
+  std::string
+  likely_write_reason(const std::string &directory,
+                      const std::string &fallback);
+
+  /**
    * Screen output of rank 0, copied to log.txt once the output directory is
    * known. Other ranks write nothing.
    */
