@@ -16,6 +16,7 @@
 #include <masonry/brickwork/brick_material.h>
 #include <masonry/brickwork/interface_law.h>
 #include <masonry/core/output_directory.h>
+#include <masonry/core/stop_signals.h>
 
 #include <deal.II/base/multithread_info.h>
 #include <deal.II/distributed/shared_tria.h>
@@ -530,7 +531,8 @@ namespace masonry
       void
       Wallette::run()
       {
-        const auto start = Clock::now();
+        const auto  start = Clock::now();
+        StopSignals stop_signals;
         describe_model(*view, mortar);
         begin();
         if (!plugins.protocol.description().empty())
@@ -582,6 +584,15 @@ namespace masonry
             if (every > 0 && controller->n_steps() % every == 0)
               save("running");
             end = controller->check_interrupted(curve);
+            // a batch system's time limit or Ctrl-C: stop here, with the
+            // checkpoint written below
+            if (end.kind != Decision::Kind::stop)
+              if (const int signal = stop_signals.received(system.comm))
+                end = Decision::stop(
+                  "interrupted",
+                  StopSignals::name(signal) + " received: stopped after step " +
+                    std::to_string(controller->n_steps()) +
+                    "; `set Resume = true' continues from the checkpoint");
           }
         std::string status = "completed", message;
         if (end.kind == Decision::Kind::stop)
@@ -648,9 +659,10 @@ namespace masonry
         summary["seconds_assembly"] = a.seconds;
         summary["seconds_solve"]    = s.seconds;
         pcout << "Result: peak stress " << std::setprecision(6)
-              << summary["peak_stress"].as_number() * 1e-6 << " MPa at strain "
-              << summary["strain_at_peak"].as_number() << ", initial modulus "
-              << summary["initial_modulus"].as_number() * 1e-9 << " GPa; "
+              << summary["peak_stress"].get<double>() * 1e-6
+              << " MPa at strain " << summary["strain_at_peak"].get<double>()
+              << ", initial modulus "
+              << summary["initial_modulus"].get<double>() * 1e-9 << " GPa; "
               << controller->n_steps() << " steps, " << statistics.total_newton
               << " Newton iterations, " << controller->n_cutbacks()
               << " cut-backs";
