@@ -1,0 +1,243 @@
+/**
+ * @file
+ * The `clp` back-end's verdicts on an LP without an optimum (clp_verdict.h).
+ */
+#include "clp_verdict.h"
+#include <coin/ClpInterior.hpp>
+#include <coin/ClpSimplex.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include "clp_barrier.h"
+#include "clp_dual.h"
+
+namespace masonry
+{
+  namespace lp
+  {
+    namespace
+    {
+      constexpr double big = 1e27; // Clp's SMALL_INFINITY
+
+      /**
+       * Solve @p model by the barrier without crossover and return the
+       * objective of its interior point (NaN if the barrier did not end
+       * optimal); its primal and dual values stay in @p model.
+       */
+      double
+      barrier_value(ClpSimplex   &model,
+                    unsigned int &iterations,
+                    const double  proven = 0)
+      {
+        double     value = std::nan("");
+        const auto keep  = [&](const ClpSimplex &point) {
+          const double *x = point.primalColumnSolution();
+          const double *c = point.objective();
+          value           = 0;
+          for (int j = 0; j < point.numberColumns(); ++j)
+            value += c[j] * x[j];
+          return true;
+        };
+        // with @p proven: stop once the barrier's lower bound (its dual
+        // objective at a dual feasible point) exceeds it
+        bool                                           stopped = false;
+        const std::function<bool(const ClpInterior &)> bound =
+          [&](const ClpInterior &b) {
+            if (b.sumDualInfeasibilities() < 1e-9 && b.dualObjective() > proven)
+              {
+                value = b.dualObjective();
+                return true;
+              }
+            return false;
+          };
+        barrier_with_crossover(model,
+                               keep,
+                               false,
+                               1e-9,
+                               proven > 0 ?
+                                 bound :
+                                 std::function<bool(const ClpInterior &)>(),
+                               &stopped);
+        iterations += model.numberIterations();
+        return value;
+      }
+
+      /** Largest violation of a row bound of @p lp by @p x, per row. */
+      std::vector<double>
+      row_violations(const LinearProgram &lp, const std::vector<double> &x)
+      {
+        const auto          activity = lp.row_activities(x);
+        std::vector<double> v(lp.n_rows(), 0.);
+        for (unsigned int i = 0; i < lp.n_rows(); ++i)
+          v[i] = std::max({0.,
+                           lp.row_lower()[i] - activity[i],
+                           activity[i] - lp.row_upper()[i]});
+        return v;
+      }
+
+      std::string
+      number(const double x)
+      {
+        char text[32];
+        std::snprintf(text, sizeof(text), "%.3g", x);
+        return text;
+      }
+    } // namespace
+
+    Verdict
+    decide_verdict(const LinearProgram &lp,
+                   ClpSimplex          &model,
+                   const bool           known_feasible,
+                   const bool           known_dual_infeasible,
+                   const double         time_limit)
+    {
+      Verdict                     v;
+      std::unique_ptr<ClpSimplex> dual = dual_of(model);
+      if (!dual)
+        {
+          v.description = "no explicit dual";
+          return v;
+        }
+      dual->setLogLevel(0);
+      if (time_limit > 0)
+        dual->setMaximumSeconds(time_limit);
+      // the scales the values are judged on
+      double largest_bound = 0, largest_cost = 0;
+      for (const auto *b : {&lp.row_lower(),
+                            &lp.row_upper(),
+                            &lp.column_lower(),
+                            &lp.column_upper()})
+        for (const double x : *b)
+          if (std::isfinite(x))
+            largest_bound = std::max(largest_bound, std::abs(x));
+      for (const double c : lp.objective())
+        largest_cost = std::max(largest_cost, std::abs(c));
+      const double  phase_1_scale = std::max(largest_bound, 1e-300);
+      const double  ray_scale     = std::max(largest_cost, 1e-300);
+      SingletonRows none;
+
+      if (!known_feasible)
+        {
+          // phase 1: the rows of D (the LP's columns) homogeneous, its
+          // columns (the multipliers of the LP's rows) boxed
+          ClpSimplex farkas(*dual);
+          for (int i = 0; i < farkas.numberRows(); ++i)
+            {
+              if (farkas.rowLower()[i] > -big)
+                farkas.setRowLower(i, 0.);
+              if (farkas.rowUpper()[i] < big)
+                farkas.setRowUpper(i, 0.);
+            }
+          for (int j = 0; j < farkas.numberColumns(); ++j)
+            {
+              if (farkas.columnLower()[j] < -big)
+                farkas.setColumnLower(j, -1.);
+              if (farkas.columnUpper()[j] > big)
+                farkas.setColumnUpper(j, 1.);
+            }
+          const double value = barrier_value(farkas, v.iterations);
+          if (std::isnan(value))
+            {
+              v.description = "phase 1 did not converge";
+              return v;
+            }
+          v.misfit = std::abs(value);
+          if (v.misfit > 1e-5 * phase_1_scale)
+            {
+              v.outcome = Verdict::Outcome::infeasible;
+              // the point of least total violation: the duals of D's rows
+              std::vector<double> x, y;
+              interior_from_dual(model, farkas, none, x, y);
+              v.row_misfit  = row_violations(lp, x);
+              v.description = "phase 1: the rows cannot be met, least sum of "
+                              "violations " +
+                              number(v.misfit);
+              return v;
+            }
+          if (v.misfit > 1e-6 * phase_1_scale)
+            {
+              v.description = "phase 1 undecided (least sum of violations " +
+                              number(v.misfit) + ")";
+              return v;
+            }
+        }
+
+      if (known_dual_infeasible)
+        {
+          v.outcome = Verdict::Outcome::unbounded;
+          v.description =
+            "feasible (phase 1: " + number(std::max(v.misfit, 0.)) +
+            "), no dual feasible point";
+          return v;
+        }
+      // the ray LP's dual: D with slacks of cost 1 on every row, no other
+      // cost, minimised
+      ClpSimplex          ray(*dual);
+      std::vector<int>    start{0}, rows;
+      std::vector<double> values, lower, upper, cost;
+      for (int i = 0; i < ray.numberRows(); ++i)
+        for (const double sign : {1., -1.})
+          if ((sign > 0 ? ray.rowLower()[i] > -big : ray.rowUpper()[i] < big))
+            {
+              rows.push_back(i);
+              values.push_back(sign);
+              start.push_back(rows.size());
+              lower.push_back(0.);
+              upper.push_back(COIN_DBL_MAX);
+              cost.push_back(1.);
+            }
+      for (int j = 0; j < ray.numberColumns(); ++j)
+        ray.setObjectiveCoefficient(j, 0.);
+      ray.addColumns(lower.size(),
+                     lower.data(),
+                     upper.data(),
+                     cost.data(),
+                     start.data(),
+                     rows.data(),
+                     values.data());
+      ray.setOptimizationDirection(1.);
+      const double value = barrier_value(ray, v.iterations, 1e-5 * ray_scale);
+      if (std::isnan(value))
+        {
+          v.description += "ray LP did not converge";
+          return v;
+        }
+      v.ray_value = value;
+      if (value > 1e-5 * ray_scale)
+        {
+          v.outcome = Verdict::Outcome::unbounded;
+          std::vector<double> y;
+          interior_from_dual(model, ray, none, v.ray, y);
+          v.description = "a ray of objective " + number(value) +
+                          " with every column within [-1, 1]";
+        }
+      else if (value < 1e-6 * ray_scale)
+        {
+          v.outcome     = Verdict::Outcome::bounded;
+          v.description = "feasible and bounded (ray LP " + number(value) + ")";
+        }
+      else
+        v.description = "ray LP undecided (" + number(value) + ")";
+      if (!known_feasible)
+        v.description =
+          "phase 1 feasible (" + number(v.misfit) + "), " + v.description;
+      return v;
+    }
+
+    std::function<bool(const ClpInterior &)>
+    divergence_rule(const double scale)
+    {
+      auto count = std::make_shared<int>(0);
+      return [scale, count](const ClpInterior &barrier) {
+        const double primal    = barrier.primalObjective();
+        const double dual      = barrier.dualObjective();
+        const bool   diverging = dual - primal > scale || primal < -100 * scale;
+        *count                 = diverging ? *count + 1 : 0;
+        return *count >= 3;
+      };
+    }
+  } // namespace lp
+} // namespace masonry
