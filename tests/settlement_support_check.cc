@@ -24,6 +24,16 @@
  *   |residual components| at their points: the joints between blocks
  *   admit any jump with a compression cap, so the fitted motions are
  *   feasible for it).
+ * - Blocks tied where no joint can open: with joints that admit no jump at
+ *   all (an interface model registered here, without yield planes) the
+ *   whole vault is one rigid body, so its support points on both
+ *   springings are fitted by one rigid motion. The left springing fixed,
+ *   the right one dropping by δ = 1 cm: with every support point in the
+ *   plane z = 0 at x = ±a, ±b (a, b = R -+ t/2) the fit is a drop of δ/2
+ *   and a rotation θ_y = (δ/2)(a + b)/(a² + b²) about the y axis, whose
+ *   largest misfit is (δ/2) max(|1 - a(a + b)/(a² + b²)|,
+ *   |1 - b(a + b)/(a² + b²)|), found as one group (1e-9); each block on its
+ *   own could follow (a translation).
  * - No false positives: a rigid motion of both springings (a translation
  *   and a small rotation of the whole vault) is followed by the rigid
  *   vault: `optimal`, a largest misfit of 0 (1e-12 m), and the loads' work
@@ -32,6 +42,8 @@
  *   every shipped settlement example, unilateral and bonded, the status
  *   (and an optimum) is the same with the check as without.
  */
+#include <masonry/rigid_blocks/interface_model.h>
+
 #include <deal.II/base/mpi.h>
 
 #include <filesystem>
@@ -42,6 +54,28 @@ using namespace vault_tests;
 
 namespace
 {
+  /** Joints that admit no jump: no yield plane at all. */
+  class RigidJoints : public masonry::rigid_blocks::InterfaceModel
+  {
+  public:
+    static void
+    declare_parameters(dealii::ParameterHandler &)
+    {}
+
+    void
+    parse_parameters(dealii::ParameterHandler &) override
+    {}
+
+    const std::vector<masonry::rigid_blocks::YieldPlane> &
+    yield_planes() const override
+    {
+      return planes;
+    }
+
+  private:
+    std::vector<masonry::rigid_blocks::YieldPlane> planes;
+  };
+
   const std::string mohr_coulomb =
     "  set Model = mohr coulomb\n  subsection Mohr coulomb\n"
     "    set Cohesion = 2e4\n    set Friction coefficient = 0.5\n"
@@ -147,6 +181,10 @@ namespace
   }
 } // namespace
 
+MASONRY_REGISTER_INTERFACE_MODEL(RigidJoints,
+                                 "rigid joints",
+                                 "Joints that admit no jump (a test).")
+
 int
 main(int argc, char **argv)
 {
@@ -173,6 +211,25 @@ main(int argc, char **argv)
             x.at("total_misfit").as_number() <= bound * (1 + 1e-6),
           "its least total misfit is positive and at most that of the "
           "least-squares fits");
+  }
+
+  // blocks tied by joints that cannot open: one group
+  {
+    const masonry::Json s =
+      run("rigid-joints",
+          bonded_barrel("0; 0; -0.01", "  set Model = rigid joints\n"));
+    const double a = 2.85, b = 3.15, q = (a + b) / (a * a + b * b);
+    const double largest =
+      0.005 * std::max(std::abs(1 - a * q), std::abs(1 - b * q));
+    const auto &x = s.at("incompatibility");
+    check(s.at("status").as_string() == "incompatible" &&
+            x.at("kind").as_string() == "support" &&
+            x.at("count").as_number() == 1 &&
+            s.at("support_check").at("supported_groups").as_number() == 1,
+          "rigid joints: the vault is one group, which cannot follow");
+    check(relative(x.at("misfit").as_number(), largest) < 1e-9,
+          "rigid joints: the misfit of one rigid motion as by hand (1e-9)");
+    std::cout << "  misfit " << std::setprecision(6) << largest << " m\n";
   }
 
   // a rigid motion of every support: followed, and the work is the

@@ -165,34 +165,8 @@ namespace masonry
               << ", contact points: " << model->n_contact_points() << "\n";
         const auto u0             = settlement_function();
         bool       known_feasible = false;
-        if (check_support)
-          {
-            const double cpu_start = thread_cpu_seconds();
-            const auto   check     = check_support_motion();
-            context.summary["cpu_seconds_check"] =
-              thread_cpu_seconds() - cpu_start;
-            record_support_check(check, context.summary);
-            if (check.incompatible)
-              {
-                std::unique_ptr<rigid_blocks::MechanismProblem> problem;
-                if (solver->export_mps())
-                  {
-                    // the LP the check spared, for an independent solver
-                    problem = std::make_unique<rigid_blocks::MechanismProblem>(
-                      assemble());
-                    export_lp(problem->lp, context);
-                  }
-                record_model(context, problem ? &problem->lp : nullptr);
-                context.summary["total_weight"]   = dead_load_magnitude();
-                context.summary["max_settlement"] = largest_settlement();
-                return report(context,
-                              "incompatible",
-                              "The prescribed support motions cannot be "
-                              "followed by rigid blocks: " +
-                                check.worst.describe() + ".");
-              }
-            known_feasible = check.exact;
-          }
+        if (refused_by_check(context, known_feasible))
+          return;
         const auto  problem = assemble(known_feasible);
         const auto &lp      = problem.lp;
         pcout << "Linear program: " << lp.n_rows() << " rows, "
@@ -205,60 +179,8 @@ namespace masonry
         summary["total_weight"]   = force_scale;
         summary["max_settlement"] = settlement_scale;
 
-        if (solution.status == lp::Status::unbounded)
-          {
-            std::string moving;
-            if (!solution.ray.empty())
-              {
-                // the blocks that move in the mechanism the solver found
-                const auto motion =
-                  rigid_blocks::motion_from_solution(problem, solution.ray, 1.);
-                double       largest = 0;
-                unsigned int n       = 0;
-                for (const auto &t : motion.translation)
-                  largest = std::max(largest, t.norm());
-                for (const auto &t : motion.translation)
-                  n += t.norm() > 1e-3 * largest;
-                summary["mechanism_blocks"] = n;
-                moving = " (in the one found, " + std::to_string(n) + " of " +
-                         std::to_string(blocks.size()) + " blocks move)";
-              }
-            return report(
-              context,
-              "mechanism",
-              "The linear program is unbounded: a mechanism exists whose "
-              "loads do positive work without any support motion" +
-                moving +
-                ", so the vault cannot stand under its own weight on these "
-                "supports (too thin, or a support is missing).");
-          }
-        if (solution.status == lp::Status::infeasible)
-          {
-            std::string where;
-            if (!solution.row_misfit.empty())
-              {
-                const auto x =
-                  rigid_blocks::locate_row_misfit(*model,
-                                                  problem,
-                                                  solution.row_misfit,
-                                                  settlement_scale,
-                                                  1e-6 * settlement_scale);
-                if (!x.kind.empty())
-                  {
-                    summary["incompatibility"] = incompatibility_json(x);
-                    where                      = ": " + x.describe();
-                  }
-              }
-            return report(context,
-                          "incompatible",
-                          "The linear program is infeasible: the prescribed "
-                          "support motions cannot be followed by rigid "
-                          "blocks without violating the joints' flow rule" +
-                            (where.empty() ?
-                               std::string(" (e.g. bonded supports moving "
-                                           "apart).") :
-                               where + "."));
-          }
+        if (solution.status != lp::Status::optimal)
+          return report_no_optimum(problem, solution, context);
 
         const double scale = force_scale * settlement_scale;
         const double dissipation =
@@ -285,6 +207,112 @@ namespace masonry
       }
 
     private:
+      /**
+       * The direct check (`Check support motion`) of the current model,
+       * with its numbers in the summary; true if it refuses the support
+       * motion (the run has then ended `incompatible`, with the LP written
+       * to lp.mps if `Export MPS file`), else @p known_feasible says
+       * whether it proves the LP feasible (SupportCheck::exact).
+       */
+      bool
+      refused_by_check(RunContext &context, bool &known_feasible)
+      {
+        known_feasible = false;
+        if (!check_support)
+          return false;
+        const double cpu_start               = thread_cpu_seconds();
+        const auto   check                   = check_support_motion();
+        context.summary["cpu_seconds_check"] = thread_cpu_seconds() - cpu_start;
+        record_support_check(check, context.summary);
+        if (!check.incompatible)
+          {
+            known_feasible = check.exact;
+            return false;
+          }
+        std::unique_ptr<rigid_blocks::MechanismProblem> problem;
+        if (solver->export_mps())
+          {
+            // the LP the check spared, for an independent solver
+            problem =
+              std::make_unique<rigid_blocks::MechanismProblem>(assemble());
+            export_lp(problem->lp, context);
+          }
+        record_model(context, problem ? &problem->lp : nullptr);
+        context.summary["total_weight"]   = dead_load_magnitude();
+        context.summary["max_settlement"] = largest_settlement();
+        report(context,
+               "incompatible",
+               "The prescribed support motions cannot be followed by rigid "
+               "blocks: " +
+                 check.worst.describe() + ".");
+        return true;
+      }
+
+      /**
+       * End a run whose LP has no optimum: `mechanism` (unbounded; the
+       * number of blocks that move in the mechanism the solver found) or
+       * `incompatible` (infeasible; where the rows cannot be met, if the
+       * solver says so).
+       */
+      void
+      report_no_optimum(const rigid_blocks::MechanismProblem &problem,
+                        const lp::Solution                   &solution,
+                        RunContext                           &context) const
+      {
+        Json &summary = context.summary;
+        if (solution.status == lp::Status::unbounded)
+          {
+            std::string moving;
+            if (!solution.ray.empty())
+              {
+                // the blocks that move in the mechanism the solver found
+                const auto motion =
+                  rigid_blocks::motion_from_solution(problem, solution.ray, 1.);
+                double       largest = 0;
+                unsigned int n       = 0;
+                for (const auto &t : motion.translation)
+                  largest = std::max(largest, t.norm());
+                for (const auto &t : motion.translation)
+                  n += t.norm() > 1e-3 * largest;
+                summary["mechanism_blocks"] = n;
+                moving = " (in the one found, " + std::to_string(n) + " of " +
+                         std::to_string(model->blocks().size()) +
+                         " blocks move)";
+              }
+            return report(
+              context,
+              "mechanism",
+              "The linear program is unbounded: a mechanism exists whose "
+              "loads do positive work without any support motion" +
+                moving +
+                ", so the vault cannot stand under its own weight on these "
+                "supports (too thin, or a support is missing).");
+          }
+        std::string where;
+        if (!solution.row_misfit.empty())
+          {
+            const auto x =
+              rigid_blocks::locate_row_misfit(*model,
+                                              problem,
+                                              solution.row_misfit,
+                                              settlement_scale,
+                                              1e-6 * settlement_scale);
+            if (!x.kind.empty())
+              {
+                summary["incompatibility"] = incompatibility_json(x);
+                where                      = ": " + x.describe();
+              }
+          }
+        report(context,
+               "incompatible",
+               "The linear program is infeasible: the prescribed support "
+               "motions cannot be followed by rigid blocks without violating "
+               "the joints' flow rule" +
+                 (where.empty() ?
+                    std::string(" (e.g. bonded supports moving apart).") :
+                    where + "."));
+      }
+
       /** The largest ground motion at a support point of the model, m. */
       double
       largest_settlement() const

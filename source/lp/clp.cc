@@ -421,9 +421,23 @@ namespace masonry
                 return DualRoute::interior;
               if ((stopped || far_off()) && decide(false))
                 return DualRoute::decided;
-              if (interior || stopped)
+              if (stopped)
                 {
-                  // else the barrier again and the crossover, as before
+                  // a false alarm (the LP has an optimum): the barrier
+                  // again as without the rule, to the same point
+                  checked = false;
+                  if (interior)
+                    kept = barrier_with_crossover(solved, keep);
+                  else
+                    barrier_with_crossover(solved);
+                  iterations += solved.numberIterations();
+                  if (kept)
+                    return DualRoute::interior;
+                }
+              else if (interior)
+                {
+                  // a rejected point: the barrier again and the crossover,
+                  // as before
                   barrier_with_crossover(solved);
                   iterations += solved.numberIterations();
                 }
@@ -842,6 +856,12 @@ namespace masonry
           "Clp: failed with status " + std::to_string(model->status()) +
           ", secondary status " + std::to_string(model->secondaryStatus());
 
+      // auxiliary LPs that ran without deciding (a false alarm, or values
+      // between the thresholds) are said, since they cost time
+      if (!verdict.description.empty() &&
+          (verdict.outcome == Verdict::Outcome::bounded ||
+           verdict.outcome == Verdict::Outcome::undecided))
+        solution.message += " (auxiliary LPs: " + verdict.description + ")";
       solution.seconds = std::chrono::duration<double>(
                            std::chrono::steady_clock::now() - start_time)
                            .count();
