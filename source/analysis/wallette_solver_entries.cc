@@ -67,7 +67,7 @@ namespace masonry
         "as the tolerance, where Newton from the constant start usually "
         "lands far below it, and past the peak of the cyclic examples "
         "that moved the collapse of the wall by a cycle "
-        "(contrib/benchmarks/wallette_cyclic/results-2026-11-24c.md): "
+        "(doc/notes/wallette-solver-speed.md): "
         "`constant' is the default.");
       prm.declare_entry(
         "Newton chord contraction",
@@ -114,8 +114,7 @@ namespace masonry
         "bit with any number of threads. More threads shorten the "
         "assembly, some 40 % of the CPU time of a detailed wallette, on "
         "idle cores; on cores shared with other jobs they cost CPU time "
-        "and gain little wall time (contrib/benchmarks/wallette_cyclic/"
-        "results-2026-11-25b.md).");
+        "and gain little wall time (doc/notes/wallette-solver-speed.md).");
       prm.declare_entry(
         "Linear solver",
         "direct",
@@ -166,8 +165,8 @@ namespace masonry
         "whose solve fails, is redone smaller, and at the floor it is "
         "corrected as by `iterate' (fewer, larger steps where the damage "
         "error comes from points that start to soften, which smaller "
-        "steps do not remove; doc/brickwork.md, IMPL-EX floor "
-        "correction). Both need `Nonlocal length' = 0.");
+        "steps do not remove; doc/notes/implex-step-control.md). Both "
+        "need `Nonlocal length' = 0.");
       prm.declare_entry(
         "IMPL-EX minimum step when unloading",
         "0",
@@ -183,7 +182,7 @@ namespace masonry
         "there takes fewer steps. Too large a floor lags the damage of "
         "the unloading and moves the next cycle's peak: in the single "
         "cyclic example 0.25 keeps the cycle peaks within 0.03 %, 0.5 "
-        "moved one by +3.3 % (doc/brickwork.md, Benchmark).");
+        "moved one by +3.3 % (contrib/benchmarks/wallette_cyclic/README.md).");
       prm.declare_entry("Linear solver tolerance",
                         "1e-10",
                         Double(0),

@@ -44,7 +44,7 @@ namespace masonry
         "without an optimum is decided by two bounded auxiliary LPs solved by "
         "the barrier (phase 1: the least sum of row violations, > 1e-5 of the "
         "largest bound: infeasible; the ray LP: a direction of positive "
-        "objective with every column within [-1, 1]: unbounded; "
+        "objective with the free columns within [-1, 1]: unbounded; "
         "doc/rigid-blocks.md, Statuses) when the barrier on the dual LP "
         "diverges (three iterations with its dual objective above its primal "
         "one by more than the LP's objective scale, or its primal objective "
@@ -85,8 +85,7 @@ namespace masonry
         "gives one extreme one), the optimum is exact to that tolerance "
         "(Mohr-Coulomb: within 6.4e-9 of the vertex's on every example and the "
         "Bothwell settlement up to 24 x 32 blocks per half, in 0.22 to 0.70 of "
-        "the solve time, contrib/benchmarks/lp_solvers/results-2026-11-29.md; "
-        "no tension no sliding: results-2026-11-29b.md there), "
+        "the solve time; contrib/benchmarks/lp_solvers/README.md), "
         "`Algorithm = barrier' runs without presolve, and no basis is kept, so "
         "warm-started callers (minimum thickness) always cross over; the "
         "genetic algorithm's cold evaluations do not. Unitless choice.");
@@ -107,7 +106,7 @@ namespace masonry
         "are less accurate than its velocities: from 12 x 16 Bothwell blocks "
         "per half up its gap is 9e-8 to 2.7e-7 while the objective is within "
         "6.1e-9 of the vertex's "
-        "(contrib/benchmarks/lp_solvers/results-2026-11-28.md). "
+        "(contrib/benchmarks/lp_solvers/README.md). "
         "Dimensionless.");
       prm.declare_entry("Presolve",
                         "true",

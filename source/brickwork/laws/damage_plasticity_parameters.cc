@@ -203,7 +203,7 @@ namespace masonry
         "extrapolation acts as an imposed strain that the next update "
         "takes up as opening again: a loop that grows by 8-31 % a step "
         "whatever the step length and ended the double cyclic example in "
-        "a spurious collapse (doc/brickwork.md, Stabilisation).");
+        "a spurious collapse (doc/notes/implex-step-control.md).");
       prm.declare_entry(
         "Tension-compression interaction",
         "false",
@@ -237,7 +237,7 @@ namespace masonry
         "mesh resolves it. Needs `Damage integration = implex'; units "
         "only (the mortar's must be 0). No measured value: the single-leaf "
         "example's peak is within 3 % of finer meshes with 0.1 m, not with "
-        "0.03 or 0.06 m (doc/brickwork.md, `Nonlocal length').");
+        "0.03 or 0.06 m (doc/notes/wallette-mesh-dependence.md).");
       prm.declare_entry(
         "Cracked compression softening",
         defaults.cracked,
