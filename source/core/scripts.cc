@@ -1,5 +1,7 @@
+#include <masonry/core/json.h>
 #include <masonry/core/scripts.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <dlfcn.h>
 #include <filesystem>
@@ -62,29 +64,106 @@ namespace masonry
     return "";
   }
 
-  std::string
-  run_script(const std::string &name, const std::vector<std::string> &arguments)
+  namespace
   {
-    const std::string script = find_script(name);
-    const std::string python = "/usr/bin/python3";
-    if (script.empty())
-      return name + " not found";
-    std::error_code error;
-    if (!std::filesystem::exists(python, error))
-      return python + " not found";
-    // each argument in single quotes, a quote inside as '\''
-    auto quoted = [](const std::string &text) {
+    /** @p text in single quotes for the shell, a quote inside as '\''. */
+    std::string
+    quoted(const std::string &text)
+    {
       std::string q = "'";
       for (const char c : text)
         q += c == '\'' ? std::string("'\\''") : std::string(1, c);
       return q + "'";
-    };
-    std::string command = python + " " + quoted(script);
-    for (const auto &argument : arguments)
-      command += " " + quoted(argument);
-    command += " >/dev/null 2>&1";
-    if (std::system(command.c_str()) != 0)
-      return name + " failed (needs python3-matplotlib)";
-    return "";
+    }
+  } // namespace
+
+  std::vector<std::string>
+  run_scripts(const std::vector<ScriptJob> &jobs)
+  {
+    std::vector<std::string> why(jobs.size());
+    if (jobs.empty())
+      return why;
+    const std::string python = "/usr/bin/python3";
+    const std::string runner = find_script("masonry_scripts.py");
+    std::error_code   error;
+    Json              list = Json::array();
+    std::vector<int>  numbers; // job of each entry of list
+    for (unsigned int j = 0; j < jobs.size(); ++j)
+      {
+        const std::string script = find_script(jobs[j].script);
+        if (script.empty())
+          why[j] = jobs[j].script + " not found";
+        else if (runner.empty())
+          why[j] = "masonry_scripts.py not found";
+        else if (!std::filesystem::exists(python, error))
+          why[j] = python + " not found";
+        if (!why[j].empty())
+          continue;
+        Json job       = Json::object();
+        job["script"]  = script;
+        Json arguments = Json::array();
+        for (const auto &a : jobs[j].arguments)
+          arguments.push_back(a);
+        job["arguments"] = arguments;
+        job["output"]    = jobs[j].output;
+        list.push_back(job);
+        numbers.push_back(j);
+      }
+    if (numbers.empty())
+      return why;
+    // the runner's lines "masonry-job N ok|error CAUSE"; anything else on
+    // its output (Python's own complaints) is kept for a runner that fails
+    const std::string command =
+      python + " " + quoted(runner) + " " + quoted(list.dump(0)) + " 2>&1";
+    std::vector<bool> answered(numbers.size(), false);
+    std::string       last_line;
+    FILE             *pipe = popen(command.c_str(), "r");
+    if (pipe == nullptr)
+      {
+        for (const int j : numbers)
+          why[j] = "cannot start " + python;
+        return why;
+      }
+    std::string line;
+    char        buffer[4096];
+    while (std::fgets(buffer, sizeof buffer, pipe) != nullptr)
+      {
+        line += buffer;
+        if (line.empty() || line.back() != '\n')
+          continue;
+        line.pop_back();
+        const std::string prefix = "masonry-job ";
+        unsigned int      n      = 0;
+        std::size_t       end    = 0;
+        if (line.rfind(prefix, 0) == 0 &&
+            std::sscanf(line.c_str() + prefix.size(), "%u", &n) == 1 &&
+            n < numbers.size() &&
+            (end = line.find(' ', prefix.size())) != std::string::npos)
+          {
+            const std::string verdict = line.substr(end + 1);
+            answered[n]               = true;
+            if (verdict != "ok")
+              why[numbers[n]] =
+                jobs[numbers[n]].script + " failed: " +
+                (verdict.rfind("error ", 0) == 0 ? verdict.substr(6) : verdict);
+          }
+        else if (!line.empty())
+          last_line = line;
+        line.clear();
+      }
+    const int status = pclose(pipe);
+    for (unsigned int n = 0; n < numbers.size(); ++n)
+      if (!answered[n])
+        why[numbers[n]] =
+          jobs[numbers[n]].script + " not run: the Python process stopped" +
+          (last_line.empty() ? " (exit status " + std::to_string(status) + ")" :
+                               " (" + last_line + ")");
+    return why;
+  }
+
+  std::string
+  run_script(const std::string &name, const std::vector<std::string> &arguments)
+  {
+    return run_scripts({ScriptJob{name, arguments, ""}}).front();
   }
 } // namespace masonry

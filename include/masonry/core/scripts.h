@@ -49,13 +49,40 @@ namespace masonry
   find_script(const std::string &name);
 
   /**
-   * Run the installed script @p name (find_script()) with `/usr/bin/python3`
-   * and @p arguments (each passed as one argument), its output discarded.
-   * Returns "" if it ran and exited with 0, otherwise why not: "NAME not
-   * found", "/usr/bin/python3 not found" or "NAME failed (needs
-   * python3-matplotlib)". The caller names the files the script wrote
-   * (OutputDirectory::file()) only on success: a file named but not written
-   * makes the run `failed'.
+   * One script to run: the installed script @p script (a name for
+   * find_script()) with @p arguments, each passed as one argument. If the
+   * script writes one file, @p output is its full path and the argument
+   * "{output}" stands for it: the script then writes a temporary name in
+   * the same directory, renamed to @p output only when the script
+   * succeeded (a picture is whole or absent).
+   */
+  struct ScriptJob
+  {
+    /** The script's name, e.g. "vault_picture.py". */
+    std::string script;
+    /** Its arguments ("{output}": the temporary name of @p output). */
+    std::vector<std::string> arguments;
+    /** The file it writes, or "". */
+    std::string output;
+  };
+
+  /**
+   * Run @p jobs in one `/usr/bin/python3` process (the installed runner
+   * masonry_scripts.py runs each script as `__main__`, so Python starts
+   * and matplotlib is imported once), in order. Returns per job "" if it
+   * ran and exited with 0, otherwise why not, in one line: "NAME not
+   * found", "/usr/bin/python3 not found", or the real cause the runner
+   * found (a missing Debian package, a full disk, the script's exception
+   * and line). The caller names the files a script wrote
+   * (OutputDirectory::file()) only on success: a file named but not
+   * written makes the run `failed'.
+   */
+  std::vector<std::string>
+  run_scripts(const std::vector<ScriptJob> &jobs);
+
+  /**
+   * Run the installed script @p name with @p arguments: run_scripts() of
+   * one job without an output of its own. Returns "" or why it failed.
    */
   std::string
   run_script(const std::string              &name,
