@@ -188,6 +188,12 @@ namespace masonry
                       context);
       }
 
+      rigid_blocks::SupportMotion
+      prescribed_support_motion() const override
+      {
+        return settlement_function();
+      }
+
     private:
       /**
        * The scaled LP of the current model (sets settlement_scale and
