@@ -39,7 +39,7 @@
  * the peak only through a drop from 5.99 to 3.55 MPa between strains
  * 0.0151 and 0.0155 that came with a mortar cell strained from 0.98 to 3.3
  * in those steps, the IMPL-EX loop of the cracks' extrapolated opening
- * (doc/brickwork.md, Stabilisation); with `IMPL-EX crack opening = frozen'
+ * (doc/notes/implex-step-control.md); with `IMPL-EX crack opening = frozen'
  * the wallette is at 5.97 MPa (0.975 of the peak) at 0.0157 and at 3.86 MPa
  * (0.63) at 0.026.
  *

@@ -23,7 +23,8 @@
  * the free sides, where the lateral stresses vanish), 16 x 16 cells: the
  * centre cells follow the uniform state (the trilinear hexahedra hold it
  * exactly); what remains is the free sides' effect, measured against a
- * 4 m x 4 m prism when this test was written (see doc/brickwork.md).
+ * 4 m x 4 m prism when this test was written (see
+ * doc/notes/brickwork-failure-mechanism.md).
  */
 #include <masonry/brickwork/brick_material.h>
 #include <masonry/brickwork/postprocessor.h>
@@ -224,7 +225,8 @@ namespace
    * 13.69 MPa with k = 1.41379 and r = 9.75. Measured on 2 m x 2 m with
    * 4 x 4, 8 x 8 cells in plan: 1.0 %, 1.7 % below (the free sides, where
    * the mortar is not confined, carry less as the mesh resolves them; see
-   * doc/brickwork.md for the finer runs): tolerance 3 %.
+   * doc/notes/brickwork-failure-mechanism.md for the finer runs):
+   * tolerance 3 %.
    *
    * Without plastic dilatancy (`Plastic Poisson's ratio = elastic': the
    * plastic strain grows along C0^-1 : s) the mortar's lateral plastic

@@ -1,8 +1,8 @@
 /**
  * `IMPL-EX crack opening' of the damage-plasticity law, at one point, against
- * the closed forms of the law's IMPL-EX stress (doc/brickwork.md,
- * Stabilisation): stress = (1 - d_t) P(s) + (1 - d_c) (s - P(s)) with
- * s = C0 : (e - e_p*), the damages and e_p* extrapolated and frozen.
+ * the closed forms of the law's IMPL-EX stress
+ * (doc/notes/implex-step-control.md): stress = (1 - d_t) P(s) + (1 - d_c) (s -
+ * P(s)) with s = C0 : (e - e_p*), the damages and e_p* extrapolated and frozen.
  *
  * (a) Uniaxial strain in tension (e_xx only, E0 = 10 GPa, nu = 0.2, f_t =
  *     1 MPa, G_f = 50 J/m^2, crack band 0.01 m, `Maximum damage' 0.95,

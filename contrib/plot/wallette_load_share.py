@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Where the vertical load of a detailed wallette goes, and what has failed,
-at one step (default: the peak of curve.csv): the table of doc/brickwork.md's
-"Why the bonded walls are hardly weaker" section.
+at one step (default: the peak of curve.csv): the table of the diagnosis in
+doc/notes/bonded-wall-strength.md.
 
 Usage: wallette_load_share.py OUTPUT_DIRECTORY [--strain EPS]
                               [--section X --png FILE]

@@ -2,7 +2,7 @@
 single and triple / single of the monotonic examples for every (f_b, f_m)
 pair of the sweep (runs bonded-THICKNESS-fbF_B-fmF_M, written by study.py).
 
-Issue 16 asks for ratios of 0.70-0.90 on the nine cyclic specimens (f_b =
+The validation asks for ratios of 0.70-0.90 on the nine cyclic specimens (f_b =
 20, f_m = 5 MPa); this part measures whether the model's ratio depends on
 the unit and mortar at all, i.e. whether any laboratory input of the sweep
 makes a bonded wall weaker than its leaves' share of the plan."""
@@ -10,7 +10,7 @@ import csv
 import os
 import re
 
-RATIO = (0.70, 0.90)  # issue 16's band for double / single, triple / single
+RATIO = (0.70, 0.90)  # the validation band for double / single, triple / single
 
 
 def runs(directory):
@@ -79,7 +79,7 @@ def section(directory, mesh_note=""):
              "and mortar inputs of every sweep pair (study.py, "
              f"sweep_inputs()){mesh_note}; peak = the largest stress, counted "
              "only where the curve then falls 2 % below it (– otherwise). "
-             "Issue 16's band for the ratios: "
+             "The validation band for the ratios: "
              f"{RATIO[0]:g}–{RATIO[1]:g}.", "",
              "| f_b MPa | f_m MPa | single MPa | double MPa | triple MPa | "
              "double / single | triple / single |",

@@ -9,7 +9,7 @@ every sweep pair NAME = sweep-fbF_B-fmF_M in the study directory (written by
 contrib/study/run) and writes there:
   study.csv   one row per specimen, then mean and CoV per thickness
   sweep.csv   one row per sweep pair, with the codes' strengths
-  study.md    the tables, the codes' strengths and every target of issue 16
+  study.md    the tables, the codes' strengths and every validation criterion
               that the runs measure, each marked met / NOT met
   study_curves.png       the stress-strain curves, one panel per thickness
   study_degradation.png  unloading modulus / initial modulus against strain
@@ -41,8 +41,8 @@ EC6_MEAN = 1.2          # mean / characteristic strength, EN 1052-1 (recalled)
 EC6_KE = 1000           # E = 1000 f_k (confirmed, second-hand)
 KAUSHIK = (0.63, 0.49, 0.32)  # f'_m = 0.63 f_b^0.49 f_j^0.32 (confirmed)
 KAUSHIK_E = 550         # E = 550 f'_m (recalled)
-MORTAR_STRENGTH = 5.0   # MPa, f_m of the examples' mortar (the issue's value)
-# the targets of issue 16
+MORTAR_STRENGTH = 5.0   # MPa, f_m of the examples' mortar
+# the validation criteria (doc/brickwork.md, Validation)
 BAND = (0.85, 1.15)     # Kaushik - 15 % to EC6 mean + 15 %
 RATIO = (0.70, 0.90)    # double / single, triple / single peak
 RMS_MAX = 0.12          # envelope RMS, before and after the peak
@@ -460,7 +460,7 @@ def sweep_section(directory, sweep):
 
 def targets(data, rows, fits, sweep, fit):
     """The met / not met lines of the targets the runs measure."""
-    out = ["## Targets of issue 16 measured by these runs", ""]
+    out = ["## Validation criteria measured by these runs", ""]
     if sweep:
         n = len(sweep)
         inside = [r for r in sweep if r.get("in_band")]

@@ -10,7 +10,7 @@ f_b = 20, f_m = 5 MPa pair is that example with a longer target strain)
 or of the single-leaf cyclic example (simplified model) with the
 unit and mortar inputs of each pair (see sweep_inputs()); each a 1-rank
 masonry run, several at a time, with its CPU time recorded; then report.py
-writes the tables, the targets of issue 16 and the plots."""
+writes the tables, the validation criteria and the plots."""
 import argparse
 import json
 import math
@@ -38,7 +38,7 @@ QUICK = {
 }
 QUICK_LENGTH = {"single": "2", "double": "4", "triple": "4"}
 
-# the sweep of issue 16: unit strength f_b x mortar strength f_m, MPa
+# the validation sweep: unit strength f_b x mortar strength f_m, MPa
 SWEEP_FB = (10.0, 20.0, 40.0)
 SWEEP_FM = (2.0, 5.0, 12.0)
 # the sweep runs monotonic past the peak (sweep_target()), nominal step
@@ -63,9 +63,9 @@ SWEEP_COLLAPSE_RATIO = 0.5
 # the detailed sweep's mesh, cells per unit + joint along its length, width
 # and height (--sweep-mesh): finer than the example's 4x2x2, whose peak lies
 # 2.3 % above 6x3x3 and 5.0 % above 8x4x4 (single leaf, f_b = 20, f_m = 5
-# MPa; contrib/benchmarks/wallette_convergence/results-2026-11-28.md and
-# -11-25.md): the sweep compares strengths with a band, so it takes the
-# finer mesh (sweep CPU 3.3 x the example mesh's, results-2026-11-29b)
+# MPa; contrib/benchmarks/wallette_convergence/README.md): the sweep
+# compares strengths with a band, so it takes the finer mesh (sweep CPU 3.3 x the example mesh's,
+# 9724a05:contrib/study/results-2026-11-29b)
 SWEEP_MESH = "6x3x3"
 # the detailed model's sweep and the mortar and bond of a specimen turned
 # detailed come from the single-leaf monotonic example
@@ -74,9 +74,10 @@ DETAILED_BASE = os.path.join(root, "prm", "examples",
 # the `bonded' part: every sweep pair in the single, double and triple
 # monotonic examples, on this mesh (--bonded-mesh): the coarsest, 2x1x1,
 # where the example mesh's ratios double / single and triple / single are
-# within 1 % (0.952 / 0.956 against 0.956 / 0.965, doc/brickwork.md,
-# diagnosis) and a triple wall takes 33-159 CPU s (results-2026-11-29d)
-# instead of about 450-550 on the example mesh
+# within 1 % (0.952 / 0.956 against 0.956 / 0.965,
+# doc/notes/bonded-wall-strength.md) and a triple wall takes 33-159 CPU s
+# (9724a05:contrib/study/results-2026-11-29d) instead of about 450-550 on
+# the example mesh
 BONDED_MESH = "2x1x1"
 
 
@@ -541,7 +542,7 @@ def main():
                  for f_b in SWEEP_FB for f_m in SWEEP_FM
                  for t in thicknesses]
     if args.jobs > 1:
-        # the longest runs first (results-2026-11-29: a triple specimen
+        # the longest runs first (contrib/study/results: a triple specimen
         # took about 2.5 times a double's CPU time and 6 times a single's,
         # a sweep pair 12-101 s), so that the last ones to finish are short
         # and the cores stay busy to the end

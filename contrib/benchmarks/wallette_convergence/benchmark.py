@@ -17,7 +17,7 @@ from wallette_common import (cells, cpu_seconds, read_rows,  # noqa: E402
                              write_rows)
 
 THICKNESSES = ("single", "double", "triple")
-# issue 16: the peak of the example mesh within 3 % of the next finer mesh
+# the criterion: the peak of the example mesh within 3 % of the next finer mesh
 TARGET_CHANGE = 0.03
 # a fall below this fraction of the largest stress so far ends the first
 # peak

@@ -17,7 +17,7 @@ from wallette_common import (cells, cpu_seconds, read_rows,  # noqa: E402
                              write_rows)
 
 THICKNESSES = ("single", "double", "triple")
-# targets of issue 7: wall seconds at a mesh whose peak is within 2 % of
+# targets: wall seconds at a mesh whose peak is within 2 % of
 # the next finer one
 TARGET_SECONDS = {"single": 120, "double": None, "triple": 600}
 TARGET_CHANGE = 0.02
