@@ -66,18 +66,18 @@ main(int argc, char **argv)
       const masonry::Json other = run(name + "_glpk", example(name) + glpk());
       if (name == "bothwell-vertical-settlement")
         {
-          std::cout << "total_weight: " << clp.at("total_weight").as_number()
+          std::cout << "total_weight: " << clp.at("total_weight").get<double>()
                     << " N" << std::endl;
-          check(relative(clp.at("total_weight").as_number(), weight) <= 1e-9,
+          check(relative(clp.at("total_weight").get<double>(), weight) <= 1e-9,
                 name + ": total weight from theory (1e-9)");
         }
-      check(std::abs(clp.at("max_settlement").as_number() - 0.01) <= 1e-15,
+      check(std::abs(clp.at("max_settlement").get<double>() - 0.01) <= 1e-15,
             name + ": settlement 1 cm");
-      const bool optimal = clp.at("status").as_string() == "optimal" &&
-                           other.at("status").as_string() == "optimal";
+      const bool optimal = clp.at("status").get<std::string>() == "optimal" &&
+                           other.at("status").get<std::string>() == "optimal";
       const double error = optimal ?
-                             relative(clp.at("objective").as_number(),
-                                      other.at("objective").as_number()) :
+                             relative(clp.at("objective").get<double>(),
+                                      other.at("objective").get<double>()) :
                              1.;
       if (!(error <= 1e-6))
         std::cout << "  relative difference " << error << "\n";
@@ -88,11 +88,11 @@ main(int argc, char **argv)
     const std::string   name    = "bothwell-seismic";
     const masonry::Json clp     = run(name, example(name));
     const masonry::Json other   = run(name + "_glpk", example(name) + glpk());
-    const bool          optimal = clp.at("status").as_string() == "optimal" &&
-                         other.at("status").as_string() == "optimal";
+    const bool          optimal = clp.at("status").get<std::string>() == "optimal" &&
+                         other.at("status").get<std::string>() == "optimal";
     const double error = optimal ?
-                           relative(clp.at("load_multiplier").as_number(),
-                                    other.at("load_multiplier").as_number()) :
+                           relative(clp.at("load_multiplier").get<double>(),
+                                    other.at("load_multiplier").get<double>()) :
                            1.;
     if (!(error <= 1e-6))
       std::cout << "  relative difference " << error << "\n";

@@ -42,8 +42,10 @@ def cause(exc, script):
         name = (exc.name or "?").split(".")[0]
         package = PACKAGES.get(name, f"python3-{name}")
         return f"missing Python module '{name}' (install the Debian package {package})"
-    if isinstance(exc, OSError) and exc.errno in (errno.ENOSPC, errno.EDQUOT):
-        return f"disk full ({exc.strerror})"
+    if isinstance(exc, OSError) and exc.errno in (errno.ENOSPC, errno.EDQUOT,
+                                                  errno.EFBIG, errno.EIO):
+        # "write failed:" tells the C++ side to end the run
+        return f"write failed: {exc.strerror}"
     if isinstance(exc, MemoryError):
         return "out of memory"
     if isinstance(exc, SystemExit):

@@ -173,7 +173,7 @@ namespace masonry
         summary["dissipation"]   = dissipation;
         summary["objective"]     = solution.objective * scale;
         pcout << "Result: optimal, work of the loads = " << std::setprecision(6)
-              << summary.at("external_work").as_number()
+              << summary.at("external_work").get<double>()
               << " J, dissipation = " << dissipation << " J, "
               << solution.iterations << " LP iterations\n";
 

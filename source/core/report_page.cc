@@ -1,3 +1,4 @@
+#include <masonry/core/output_file.h>
 #include <masonry/core/report_page.h>
 #include <masonry/core/scripts.h>
 
@@ -126,55 +127,32 @@ namespace masonry
       {"{{DATA}}", script_safe(data)},
       {"{{PLOTLY}}", base64(plotly)},
       {"{{SCRIPT}}", common + "\n" + script}};
-    const std::filesystem::path final_path(path);
-    const std::filesystem::path partial =
-      final_path.parent_path() / ("." + final_path.filename().string() + "." +
-                                  std::to_string(getpid()) + ".part");
-    {
-      std::ofstream out(partial, std::ios::binary);
-      std::size_t   at = 0;
-      while (out && at < page.size())
-        {
-          std::size_t        next = std::string::npos, length = 0;
-          const std::string *text = nullptr;
-          for (const auto &[marker, value] : parts)
-            {
-              const std::size_t found = page.find(marker, at);
-              if (found < next)
-                {
-                  next   = found;
-                  length = std::strlen(marker);
-                  text   = &value;
-                }
-            }
-          out.write(page.data() + at,
-                    (next == std::string::npos ? page.size() : next) - at);
-          if (next == std::string::npos)
-            break;
-          out.write(text->data(), text->size());
-          at = next + length;
-        }
-      out.close();
-      if (!out)
-        {
-          const int       error = errno;
-          std::error_code ignored;
-          std::filesystem::remove(partial, ignored);
-          return "cannot write " + partial.string() + " (" +
-                 (error == ENOSPC ? std::string("disk full") :
-                                    std::string(std::strerror(error))) +
-                 ")";
-        }
-    }
-    std::error_code error;
-    std::filesystem::rename(partial, final_path, error);
-    if (error)
+    // under a temporary name until whole; a failed write throws
+    // "cannot write 'PATH': REASON" (OutputFile)
+    OutputFile  out(path);
+    std::size_t at = 0;
+    while (at < page.size())
       {
-        std::error_code ignored;
-        std::filesystem::remove(partial, ignored);
-        return "cannot rename " + partial.string() + " to " + path + " (" +
-               error.message() + ")";
+        std::size_t        next = std::string::npos, length = 0;
+        const std::string *text = nullptr;
+        for (const auto &[marker, value] : parts)
+          {
+            const std::size_t found = page.find(marker, at);
+            if (found < next)
+              {
+                next   = found;
+                length = std::strlen(marker);
+                text   = &value;
+              }
+          }
+        out.write(page.data() + at,
+                  (next == std::string::npos ? page.size() : next) - at);
+        if (next == std::string::npos)
+          break;
+        out.write(text->data(), text->size());
+        at = next + length;
       }
+    out.close();
     return "";
   }
 } // namespace masonry

@@ -1,4 +1,5 @@
 #include <masonry/core/json.h>
+#include <masonry/core/output_file.h>
 #include <masonry/core/scripts.h>
 
 #include <cstdio>
@@ -152,6 +153,18 @@ namespace masonry
         line.clear();
       }
     const int status = pclose(pipe);
+    // a picture that could not be written ends the run, like any file
+    const std::string write_failed = "failed: write failed: ";
+    for (const int j : numbers)
+      {
+        const auto at = why[j].find(write_failed);
+        if (at != std::string::npos)
+          AssertThrow(false,
+                      dealii::ExcMessage(
+                        write_error(jobs[j].output.empty() ? jobs[j].script :
+                                                             jobs[j].output,
+                                    why[j].substr(at + write_failed.size()))));
+      }
     for (unsigned int n = 0; n < numbers.size(); ++n)
       if (!answered[n])
         why[numbers[n]] =
@@ -162,8 +175,28 @@ namespace masonry
   }
 
   std::string
-  run_script(const std::string &name, const std::vector<std::string> &arguments)
+  run_script(const std::string              &name,
+             const std::vector<std::string> &arguments,
+             const std::vector<std::string> &outputs)
   {
-    return run_scripts({ScriptJob{name, arguments, ""}}).front();
+    std::string why;
+    try
+      {
+        why = run_scripts({ScriptJob{name, arguments, ""}}).front();
+      }
+    catch (...)
+      {
+        std::error_code error;
+        for (const auto &output : outputs)
+          std::filesystem::remove(output, error);
+        throw;
+      }
+    if (!why.empty())
+      {
+        std::error_code error;
+        for (const auto &output : outputs)
+          std::filesystem::remove(output, error);
+      }
+    return why;
   }
 } // namespace masonry

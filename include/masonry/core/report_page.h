@@ -27,8 +27,8 @@ namespace masonry
    * `report/common.js`) and @p data, the JSON text it draws. Written under
    * a temporary name in the same directory and renamed when complete (a
    * page is whole or absent). Returns "" or why it was not written, in one
-   * line (a part not found and the package that brings it, a full disk,
-   * ...).
+   * line (a part not found and the package that brings it); a failed write
+   * (a full disk, ...) throws "cannot write 'PATH': REASON".
    */
   std::string
   write_report_page(const std::string &path,

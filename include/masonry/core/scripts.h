@@ -76,17 +76,25 @@ namespace masonry
    * and line). The caller names the files a script wrote
    * (OutputDirectory::file()) only on success: a file named but not
    * written makes the run `failed'.
+   *
+   * A script that failed because a file could not be written (a full
+   * disk, a file-size limit, an I/O error) is no reason to go on:
+   * run_scripts() then throws an ExcMessage "cannot write 'FILE': REASON"
+   * naming the job's output (or script).
    */
   std::vector<std::string>
   run_scripts(const std::vector<ScriptJob> &jobs);
 
   /**
    * Run the installed script @p name with @p arguments: run_scripts() of
-   * one job without an output of its own. Returns "" or why it failed.
+   * one job. @p outputs are the files it writes by names of its own: they
+   * are removed if it fails, so that they are whole or absent. Returns ""
+   * or why it failed.
    */
   std::string
   run_script(const std::string              &name,
-             const std::vector<std::string> &arguments);
+             const std::vector<std::string> &arguments,
+             const std::vector<std::string> &outputs = {});
 } // namespace masonry
 
 #endif

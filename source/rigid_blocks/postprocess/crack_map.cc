@@ -4,6 +4,7 @@
  * the developed intrados.
  */
 #include <masonry/core/output_directory.h>
+#include <masonry/core/output_file.h>
 #include <masonry/geometry/interface.h>
 #include <masonry/geometry/patch.h>
 #include <masonry/rigid_blocks/postprocess/crack_map.h>
@@ -47,8 +48,9 @@ namespace masonry
           const DevelopedSurface map(model);
           const std::string      csv = context.output.file("crack_map.csv");
           {
-            std::ofstream out(csv);
+            OutputFile out(csv);
             write_table(result, map, out);
+            out.close();
           }
           if (!result.options().write_picture)
             return;
@@ -57,7 +59,7 @@ namespace masonry
           result.render({"crack_map.py",
                          {csv,
                           "{output}",
-                          context.summary.at("analysis").as_string(),
+                          context.summary.at("analysis").get<std::string>(),
                           "--tolerance",
                           number(result.tolerance())},
                          dir.path() + "crack_map.png"},

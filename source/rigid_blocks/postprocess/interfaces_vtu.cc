@@ -3,10 +3,10 @@
  * Postprocessor `interfaces vtu`: interfaces.vtu.
  */
 #include <masonry/core/output_directory.h>
+#include <masonry/core/output_file.h>
+#include <masonry/core/vtu_grid.h>
 #include <masonry/rigid_blocks/postprocess/interface.h>
-#include <masonry/rigid_blocks/postprocess/vtu.h>
 
-#include <fstream>
 
 namespace masonry
 {
@@ -79,8 +79,9 @@ namespace masonry
           grid.point_vectors.emplace_back("displacement",
                                           std::move(displacement));
           grid.point_vectors.emplace_back("support_motion", std::move(ground));
-          std::ofstream out(context.output.file("interfaces.vtu"));
+          OutputFile out(context.output.file("interfaces.vtu"));
           grid.write(out);
+          out.close();
         }
       };
     } // namespace postprocess

@@ -170,8 +170,8 @@ namespace masonry
               return;
             }
           const std::string title =
-            "masonry: " + context.summary.at("analysis").as_string() + " — " +
-            context.summary.at("parameter_file").as_string();
+            "masonry: " + context.summary.at("analysis").get<std::string>() +
+            " — " + context.summary.at("parameter_file").get<std::string>();
           const std::string path = context.output.path() + "report.html";
           const std::string why =
             write_report_page(path, title, "rigid_blocks", data);

@@ -67,7 +67,7 @@ namespace masonry
             {"vault_picture.py",
              {dir.path() + "blocks.vtu",
               "{output}",
-              xml_escape(context.summary.at("analysis").as_string()),
+              xml_escape(context.summary.at("analysis").get<std::string>()),
               "--amplification",
               number(result.amplification()),
               "--view",
