@@ -18,9 +18,9 @@ from the vault's centre, of the side to look from)
 import argparse
 import math
 import os
-import xml.etree.ElementTree as ET
 
 import matplotlib
+import meshio
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -33,24 +33,17 @@ OPEN_FRACTION = 1e-4
 
 
 def read_vtu(path, nodes_per_cell):
-    """Points, connectivity and the cell and point data arrays of an ASCII
-    VTU (point data reshaped to one row per point)."""
-    root = ET.parse(path).getroot()
-    piece = root.find("UnstructuredGrid/Piece")
-    points = np.array(piece.find("Points/DataArray").text.split(), dtype=float).reshape(-1, 3)
-    cells = piece.find("Cells")
-    conn = np.array(cells.find("DataArray[@Name='connectivity']").text.split(),
-                    dtype=np.int64).reshape(-1, nodes_per_cell)
+    """Points, connectivity and the cell and point data arrays of a VTU file
+    (read by meshio; point data with one row per point)."""
+    mesh = meshio.read(path)
+    kind = {8: "hexahedron", 4: "quad"}[nodes_per_cell]
+    conn = np.concatenate([b.data for b in mesh.cells if b.type == kind]).astype(np.int64)
     data = {}
-    cell_data = piece.find("CellData")
-    if cell_data is not None:
-        for a in cell_data.iter("DataArray"):
-            data[a.get("Name")] = np.array((a.text or "").split(), dtype=float)
-    point_data = piece.find("PointData")
-    if point_data is not None:
-        for a in point_data.iter("DataArray"):
-            data[a.get("Name")] = np.array((a.text or "").split(), dtype=float).reshape(len(points), -1)
-    return points, conn, data
+    for name, blocks in mesh.cell_data.items():
+        data[name] = np.concatenate([np.asarray(b, dtype=float) for b in blocks])
+    for name, values in mesh.point_data.items():
+        data[name] = np.asarray(values, dtype=float).reshape(len(mesh.points), -1)
+    return np.asarray(mesh.points, dtype=float), conn, data
 
 
 # the six faces of a VTK hexahedron (0-3 intrados side, 4-7 extrados side)
