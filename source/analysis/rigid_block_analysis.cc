@@ -26,29 +26,28 @@
 
 namespace masonry
 {
-  namespace
+  namespace analysis
   {
-    using Clock = std::chrono::steady_clock;
-
-    /** Seconds since @p start. */
-    double
-    seconds_since(const Clock::time_point &start)
+    namespace
     {
-      return std::chrono::duration<double>(Clock::now() - start).count();
-    }
+      using Clock = std::chrono::steady_clock;
 
-    /** CPU time of the calling thread, s. */
+      /** Seconds since @p start. */
+      double
+      seconds_since(const Clock::time_point &start)
+      {
+        return std::chrono::duration<double>(Clock::now() - start).count();
+      }
+    } // namespace
+
     double
-    thread_cpu_seconds()
+    RigidBlockAnalysis::thread_cpu_seconds()
     {
       timespec t;
       clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
       return t.tv_sec + 1e-9 * t.tv_nsec;
     }
-  } // namespace
 
-  namespace analysis
-  {
     std::set<std::string>
     RigidBlockAnalysis::split_labels(const std::string &text)
     {
@@ -690,16 +689,24 @@ namespace masonry
       return total;
     }
 
+    void
+    RigidBlockAnalysis::export_lp(const lp::LinearProgram &lp,
+                                  RunContext              &context,
+                                  const std::string       &mps_name) const
+    {
+      if (!quiet && solver->export_mps() &&
+          dealii::Utilities::MPI::this_mpi_process(context.mpi_communicator) ==
+            0)
+        lp.write_mps(context.output.file(mps_name));
+    }
+
     lp::Solution
     RigidBlockAnalysis::solve(const lp::LinearProgram &lp,
                               RunContext              &context,
                               const std::string       &mps_name,
                               lp::WarmStart           *warm)
     {
-      if (!quiet && solver->export_mps() &&
-          dealii::Utilities::MPI::this_mpi_process(context.mpi_communicator) ==
-            0)
-        lp.write_mps(context.output.file(mps_name));
+      export_lp(lp, context, mps_name);
       // a large LP can take minutes without a line on the screen
       if (!quiet && lp.n_rows() > 200000)
         {
@@ -710,11 +717,18 @@ namespace masonry
                << " M non-zeros: this may take minutes\n";
           context.pcout << line.str();
         }
-      const auto         start     = std::chrono::steady_clock::now();
-      const double       cpu_start = thread_cpu_seconds();
-      const lp::Solution solution  = warm && solver->warm_starts() ?
-                                       solver->solve_warm(lp, *warm) :
-                                       solver->solve(lp);
+      const auto   start     = std::chrono::steady_clock::now();
+      const double cpu_start = thread_cpu_seconds();
+      lp::Solution solution  = warm && solver->warm_starts() ?
+                                 solver->solve_warm(lp, *warm) :
+                                 solver->solve(lp);
+      // every optimum is checked on the LP, also from a back-end that
+      // does not check its own (a plugin)
+      if (solution.status == lp::Status::optimal && !solution.checked)
+        {
+          solution.check   = lp::check_pair(lp, solution.x, solution.row_duals);
+          solution.checked = true;
+        }
       seconds_solve +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
           .count();
@@ -727,36 +741,47 @@ namespace masonry
       return solution;
     }
 
-    double
-    RigidBlockAnalysis::check_solution(const lp::LinearProgram &lp,
-                                       const lp::Solution      &solution,
-                                       RunContext              &context) const
+    void
+    RigidBlockAnalysis::check_solution(const lp::Solution &solution,
+                                       RunContext         &context) const
     {
-      const auto activity  = lp.row_activities(solution.x);
-      double     violation = 0;
-      for (unsigned int r = 0; r < activity.size(); ++r)
-        violation = std::max({violation,
-                              lp.row_lower()[r] - activity[r],
-                              activity[r] - lp.row_upper()[r]});
-      if (violation > 1e-6)
-        context.pcout << "Warning: the LP solution violates a constraint by "
-                      << violation << " (in the LP's scaled units)\n";
-      return violation;
+      const lp::PairCheck &c       = solution.check;
+      Json                &summary = context.summary;
+      summary["lp_max_violation"]  = c.primal_residual;
+      summary["lp_dual_violation"] = c.dual_residual;
+      summary["lp_relative_gap"]   = c.relative_gap();
+      const bool passed            = c.within(solver->check_tolerance());
+      summary["lp_check"]          = passed ? "passed" : "failed";
+      if (!passed)
+        {
+          std::ostringstream line;
+          line << std::setprecision(3)
+               << "Warning: the LP solver's optimum fails the check on the "
+                  "LP (tolerance "
+               << solver->check_tolerance() << ", LP units): bound violation "
+               << c.primal_residual << ", dual sign violation "
+               << c.dual_residual << ", relative duality gap "
+               << c.relative_gap()
+               << "; the results are uncertain by about that much\n";
+          context.pcout << line.str();
+        }
     }
 
     void
-    RigidBlockAnalysis::record(const lp::LinearProgram &lp,
-                               const lp::Solution      &solution,
-                               RunContext              &context) const
+    RigidBlockAnalysis::record_model(RunContext              &context,
+                                     const lp::LinearProgram *lp) const
     {
-      Json &summary                = context.summary;
-      summary["n_blocks"]          = model->blocks().size();
-      summary["n_interfaces"]      = model->interfaces().size();
-      summary["n_contact_points"]  = model->n_contact_points();
-      summary["interface_model"]   = joints_name;
-      summary["lp_rows"]           = lp.n_rows();
-      summary["lp_columns"]        = lp.n_columns();
-      summary["lp_nonzeros"]       = lp.n_nonzeros();
+      Json &summary               = context.summary;
+      summary["n_blocks"]         = model->blocks().size();
+      summary["n_interfaces"]     = model->interfaces().size();
+      summary["n_contact_points"] = model->n_contact_points();
+      summary["interface_model"]  = joints_name;
+      if (lp)
+        {
+          summary["lp_rows"]     = lp->n_rows();
+          summary["lp_columns"]  = lp->n_columns();
+          summary["lp_nonzeros"] = lp->n_nonzeros();
+        }
       summary["lp_solver"]         = solver_name;
       summary["lp_solves"]         = n_solves;
       summary["lp_iterations"]     = n_iterations;
@@ -764,9 +789,18 @@ namespace masonry
       summary["seconds_assembly"]  = seconds_assembly;
       summary["seconds_solve"]     = seconds_solve;
       summary["cpu_seconds_solve"] = cpu_seconds_solve;
-      summary["lp_message"]        = solution.message;
+    }
+
+    void
+    RigidBlockAnalysis::record(const lp::LinearProgram &lp,
+                               const lp::Solution      &solution,
+                               RunContext              &context) const
+    {
+      record_model(context, &lp);
+      Json &summary         = context.summary;
+      summary["lp_message"] = solution.message;
       if (solution.status == lp::Status::optimal)
-        summary["lp_max_violation"] = check_solution(lp, solution, context);
+        check_solution(solution, context);
     }
 
     unsigned int

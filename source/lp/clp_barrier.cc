@@ -418,14 +418,54 @@ namespace masonry
         status_ = 0;
         return newDropped;
       }
+      /**
+       * Clp's event handler called after every barrier iteration: asks
+       * the rule of barrier_with_crossover()'s @p stop whether to stop
+       * (Clp copies the handler, so the flag is shared by pointer).
+       */
+      class StopRule : public ClpEventHandler
+      {
+      public:
+        StopRule(const ClpInterior                              *barrier,
+                 const std::function<bool(const ClpInterior &)> *rule,
+                 bool                                           *stopped)
+          : barrier(barrier)
+          , rule(rule)
+          , stopped(stopped)
+        {}
+
+        int
+        event(Event which) override
+        {
+          if (which == endOfIteration && (*rule)(*barrier))
+            {
+              *stopped = true;
+              return 0; // stop
+            }
+          return -1;
+        }
+
+        ClpEventHandler *
+        clone() const override
+        {
+          return new StopRule(*this);
+        }
+
+      private:
+        const ClpInterior                              *barrier;
+        const std::function<bool(const ClpInterior &)> *rule;
+        bool                                           *stopped;
+      };
     } // namespace
 
     bool
     barrier_with_crossover(
-      ClpSimplex                                    &model,
-      const std::function<bool(const ClpSimplex &)> &accept,
-      const bool                                     cross_if_rejected,
-      const double                                   accept_tolerance)
+      ClpSimplex                                     &model,
+      const std::function<bool(const ClpSimplex &)>  &accept,
+      const bool                                      cross_if_rejected,
+      const double                                    accept_tolerance,
+      const std::function<bool(const ClpInterior &)> &stop,
+      bool                                           *stopped)
     {
       // ClpSimplex::initialSolve(), ClpSolve::useBarrier, presolve off,
       // special options 0 (ClpSolve.cpp of Clp 1.17), with ReusedCholesky
@@ -435,6 +475,12 @@ namespace masonry
       const int   saveScaling      = model.scalingFlag();
       ClpInterior barrier;
       barrier.borrowModel(model);
+      bool was_stopped = false;
+      if (stop)
+        {
+          const StopRule rule(&barrier, &stop, &was_stopped);
+          barrier.passInEventHandler(&rule);
+        }
       barrier.eventHandler()->setSimplex(nullptr);
       if (numberRows + numberColumns > 10000)
         barrier.setMaximumBarrierIterations(1000);
@@ -453,6 +499,8 @@ namespace masonry
         barrier.setDualTolerance(accept_tolerance);
       barrier.primalDual();
       barrier.setDualTolerance(saveDualTolerance);
+      if (stopped)
+        *stopped = was_stopped;
       const int    maxIts        = barrier.maximumBarrierIterations();
       const int    barrierStatus = barrier.status();
       const double gap           = barrier.complementarityGap();
@@ -472,7 +520,7 @@ namespace masonry
               model.setNumberIterations(first);
               return true;
             }
-          if (!cross_if_rejected)
+          if (!cross_if_rejected || was_stopped)
             {
               model.setNumberIterations(first);
               return false;
@@ -521,7 +569,7 @@ namespace masonry
       const std::vector<double> columnDual(model.dualColumnSolution(),
                                            model.dualColumnSolution() +
                                              numberColumns);
-      if (maxIts && barrierStatus < 4)
+      if (maxIts && barrierStatus < 4 && !was_stopped)
         {
           bool optimal_values_pass = false;
           // crossover

@@ -12,6 +12,7 @@
 #include <functional>
 
 class ClpSimplex;
+class ClpInterior;
 
 namespace masonry
 {
@@ -44,13 +45,21 @@ namespace masonry
      * (the same result as without @p accept), and this function returns
      * false; with @p cross_if_rejected false it returns false at once
      * (@p model then holds the barrier's last point, with no basis).
+     *
+     * If @p stop is given, it is called after every barrier iteration with
+     * the barrier; when it returns true the barrier stops there, no
+     * crossover runs (also not with @p cross_if_rejected), @p model holds
+     * the barrier's last point without a basis, *@p stopped is set and
+     * this function returns false.
      */
     bool
     barrier_with_crossover(
-      ClpSimplex                                    &model,
-      const std::function<bool(const ClpSimplex &)> &accept = nullptr,
-      bool                                           cross_if_rejected = true,
-      double                                         accept_tolerance  = 1e-12);
+      ClpSimplex                                     &model,
+      const std::function<bool(const ClpSimplex &)>  &accept = nullptr,
+      bool                                            cross_if_rejected = true,
+      double                                          accept_tolerance  = 1e-12,
+      const std::function<bool(const ClpInterior &)> &stop    = nullptr,
+      bool                                           *stopped = nullptr);
   } // namespace lp
 } // namespace masonry
 

@@ -5,11 +5,15 @@
  */
 #include "clp_dual.h"
 #include <coin/ClpSimplex.hpp>
+#include <coin/ClpSimplexOther.hpp>
 #include <coin/CoinPackedMatrix.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fcntl.h>
+#include <mutex>
+#include <unistd.h>
 
 namespace masonry
 {
@@ -200,89 +204,33 @@ namespace masonry
         }
     }
 
-    double
-    PairCheck::relative_gap() const
+    std::unique_ptr<ClpSimplex>
+    dual_of(ClpSimplex &model)
     {
-      return std::abs(dual_objective - primal_objective) /
-             std::max({std::abs(primal_objective),
-                       std::abs(dual_objective),
-                       gap_floor});
-    }
-
-    bool
-    PairCheck::within(const double tolerance) const
-    {
-      return relative_gap() <= tolerance && primal_residual <= tolerance &&
-             dual_residual <= tolerance;
-    }
-
-    std::string
-    PairCheck::describe() const
-    {
-      char text[200];
-      std::snprintf(text,
-                    sizeof(text),
-                    "relative gap %.2e, primal residual %.2e, dual residual "
-                    "%.2e, bound %.12g, objective %.12g, scale %.6g",
-                    relative_gap(),
-                    primal_residual,
-                    dual_residual,
-                    dual_objective,
-                    primal_objective,
-                    work_scale);
-      return text;
-    }
-
-    PairCheck
-    check_pair(const LinearProgram       &lp,
-               const std::vector<double> &x,
-               const std::vector<double> &y)
-    {
-      PairCheck    c;
-      const double sense = lp.maximize ? 1. : -1.;
-      // the bound a multiplier's sign selects (maximisation: a positive
-      // one the upper), its product into the bound, or the part against
-      // an infinite bound into the dual residual
-      const auto add = [&](const double dual, const double l, const double u) {
-        if (dual == 0)
-          return;
-        const double bound = sense * dual > 0 ? u : l;
-        if (std::isfinite(bound))
-          c.dual_objective += dual * bound;
-        else
-          c.dual_residual = std::max(c.dual_residual, std::abs(dual));
-      };
-      const auto activity = lp.row_activities(x);
-      for (unsigned int i = 0; i < lp.n_rows(); ++i)
+      static std::mutex           mutex;
+      std::lock_guard<std::mutex> lock(mutex);
+      std::fflush(stdout);
+      const int saved = ::dup(STDOUT_FILENO);
+      const int null  = ::open("/dev/null", O_WRONLY);
+      if (saved >= 0 && null >= 0)
+        ::dup2(null, STDOUT_FILENO);
+      std::unique_ptr<ClpSimplex> dual;
+      try
         {
-          c.primal_residual = std::max({c.primal_residual,
-                                        lp.row_lower()[i] - activity[i],
-                                        activity[i] - lp.row_upper()[i]});
-          add(y[i], lp.row_lower()[i], lp.row_upper()[i]);
+          dual.reset(static_cast<ClpSimplexOther &>(model).dualOfModel());
         }
-      std::vector<double> d = lp.objective();
-      for (const auto &e : lp.entries())
-        d[e.column] -= e.value * y[e.row];
-      for (unsigned int j = 0; j < lp.n_columns(); ++j)
+      catch (const CoinError &)
         {
-          c.primal_residual = std::max({c.primal_residual,
-                                        lp.column_lower()[j] - x[j],
-                                        x[j] - lp.column_upper()[j]});
-          add(d[j], lp.column_lower()[j], lp.column_upper()[j]);
+          // some bound patterns are beyond it: no dual
         }
-      c.primal_objective = lp.objective_value(x);
-      // |c|_1 times the largest finite bound
-      double largest = 0;
-      for (const auto *b : {&lp.row_lower(),
-                            &lp.row_upper(),
-                            &lp.column_lower(),
-                            &lp.column_upper()})
-        for (const double v : *b)
-          if (std::isfinite(v))
-            largest = std::max(largest, std::abs(v));
-      for (const double cj : lp.objective())
-        c.work_scale += std::abs(cj) * largest;
-      return c;
+      std::fflush(stdout);
+      if (saved >= 0 && null >= 0)
+        ::dup2(saved, STDOUT_FILENO);
+      if (null >= 0)
+        ::close(null);
+      if (saved >= 0)
+        ::close(saved);
+      return dual;
     }
 
     void

@@ -40,13 +40,25 @@ namespace masonry
         "dual feasible; both without scaling, after a pass of the primal "
         "simplex on the unscaled dual LP, when the barrier's vertex is optimal "
         "only for Clp's scaled dual LP; the LP is solved directly if this "
-        "clean-up does not end within 1000 + rows / 20 iterations). A dual LP "
-        "that the simplex proves infeasible (after the barrier: the primal "
-        "simplex from the barrier's last point) makes the LP unbounded or "
-        "infeasible (unbounded if x = 0 satisfies every bound, else decided by "
-        "a feasibility solve); anything else not proven optimal is solved "
-        "directly by the same method. The choice comes from the measurements "
-        "in contrib/benchmarks/lp_solvers. Unitless choice.");
+        "clean-up does not end within 1000 + rows / 20 iterations). An LP "
+        "without an optimum is decided by two bounded auxiliary LPs solved by "
+        "the barrier (phase 1: the least sum of row violations, > 1e-5 of the "
+        "largest bound: infeasible; the ray LP: a direction of positive "
+        "objective with the free columns within [-1, 1]: unbounded; "
+        "doc/rigid-blocks.md, Statuses) when the barrier on the dual LP "
+        "diverges (three iterations with its dual objective above its primal "
+        "one by more than the LP's objective scale, or its primal objective "
+        "below -100 times it), ends far off the LP (a residual above 1e-4), "
+        "or the simplex proves the dual LP unbounded or needs more than "
+        "1.25 times as many pivots as the dual LP has rows (plus 20); a dual "
+        "LP that the "
+        "simplex proves infeasible (after the barrier: the primal simplex "
+        "from the barrier's last point) makes the LP unbounded or infeasible "
+        "(unbounded if x = 0 satisfies every bound, else phase 1 decides). "
+        "If they do not decide, a feasibility solve does, and anything else "
+        "not proven optimal is solved directly by the same method. The "
+        "choice comes from the measurements in contrib/benchmarks/lp_solvers "
+        "and contrib/benchmarks/lp_verdicts. Unitless choice.");
       prm.declare_entry(
         "Crossover",
         "never",

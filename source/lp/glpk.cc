@@ -4,6 +4,8 @@
  */
 #include <masonry/lp/interface.h>
 
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <climits>
 #include <cmath>
@@ -53,20 +55,49 @@ namespace masonry
       }
 
       /**
-       * glp_simplex() that returns -1 instead of aborting the process when
-       * GLPK hits an internal error; @p problem is then freed already.
-       * No object with a destructor may live in this frame (longjmp).
+       * @p method (glp_simplex() or glp_exact()) that returns -1 instead of
+       * aborting the process when GLPK hits an internal error; @p problem
+       * is then freed already. No object with a destructor may live in
+       * this frame (longjmp).
        */
       int
-      guarded_simplex(glp_prob *problem, const glp_smcp *parameters)
+      guarded(int (*method)(glp_prob *, const glp_smcp *),
+              glp_prob       *problem,
+              const glp_smcp *parameters)
       {
         ErrorJump jump;
         if (setjmp(jump.buffer) != 0)
           return -1;
         glp_error_hook(glpk_error_hook, &jump);
-        const int result = glp_simplex(problem, parameters);
+        const int result = method(problem, parameters);
         glp_error_hook(nullptr, nullptr);
         return result;
+      }
+
+      /** glp_simplex() through guarded(). */
+      int
+      guarded_simplex(glp_prob *problem, const glp_smcp *parameters)
+      {
+        return guarded(glp_simplex, problem, parameters);
+      }
+
+      /** The optimal point and row duals of @p problem into @p solution,
+       * checked on @p lp. */
+      void
+      read_optimum(glp_prob *problem, const LinearProgram &lp, Solution &s)
+      {
+        const unsigned int n = lp.n_columns(), m = lp.n_rows();
+        s.x.resize(n);
+        for (unsigned int j = 0; j < n; ++j)
+          s.x[j] = glp_get_col_prim(problem, j + 1);
+        // GLPK's row duals are d(c^T x)/d(row bound) in the sense of the
+        // problem: our convention already
+        s.row_duals.resize(m);
+        for (unsigned int i = 0; i < m; ++i)
+          s.row_duals[i] = glp_get_row_dual(problem, i + 1);
+        s.objective = lp.objective_value(s.x);
+        s.check     = check_pair(lp, s.x, s.row_duals);
+        s.checked   = true;
       }
     } // namespace
 
@@ -98,6 +129,22 @@ namespace masonry
       /** A GLPK problem object holding @p lp (scaled). */
       static glp_prob *
       create(const LinearProgram &lp);
+
+      /**
+       * An optimum in @p solution that fails the check on the LP (GLPK's
+       * tolerances apply to its scaled problem: a dome's LP came back with
+       * a row violated by 1.7e-3): the primal simplex from the basis of
+       * @p problem on the unscaled problem, then, if that fails too, GLPK's
+       * exact rational simplex from the basis. Keeps the first optimum
+       * that passes, else the one with the smallest violation, and says
+       * so in the message. Returns the problem object (nullptr if GLPK
+       * freed it on an internal error).
+       */
+      glp_prob *
+      resolve(glp_prob            *problem,
+              const LinearProgram &lp,
+              glp_smcp             parameters,
+              Solution            &solution) const;
     };
 
 
@@ -170,6 +217,61 @@ namespace masonry
       return problem;
     }
 
+    glp_prob *
+    Glpk::resolve(glp_prob            *problem,
+                  const LinearProgram &lp,
+                  glp_smcp             parameters,
+                  Solution            &solution) const
+    {
+      const std::string first = solution.check.describe();
+      // the largest of the three numbers the check compares
+      const auto worst = [](const PairCheck &c) {
+        return std::max({c.primal_residual, c.dual_residual, c.relative_gap()});
+      };
+      parameters.presolve = GLP_OFF;
+      parameters.meth     = GLP_PRIMAL;
+      int counted         = glp_get_it_cnt(problem);
+      const std::
+        array<std::pair<const char *, int (*)(glp_prob *, const glp_smcp *)>, 2>
+          routes = {
+            {{"the primal simplex on the unscaled problem", glp_simplex},
+             {"the exact (rational) simplex", glp_exact}}};
+      for (const auto &[name, method] : routes)
+        {
+          glp_unscale_prob(problem);
+          const int result = guarded(method, problem, &parameters);
+          if (result == -1)
+            {
+              solution.message += " (failed the check, " + first + "; " + name +
+                                  " stopped on an internal error)";
+              return nullptr;
+            }
+          solution.iterations += glp_get_it_cnt(problem) - counted;
+          counted = glp_get_it_cnt(problem);
+          if (result != 0 || glp_get_status(problem) != GLP_OPT)
+            continue;
+          Solution again;
+          read_optimum(problem, lp, again);
+          if (worst(again.check) < worst(solution.check))
+            {
+              solution.x         = std::move(again.x);
+              solution.row_duals = std::move(again.row_duals);
+              solution.objective = again.objective;
+              solution.check     = again.check;
+            }
+          if (solution.check.within(check_tolerance()))
+            {
+              solution.message += " (failed the check, " + first +
+                                  "; solved again by " + name + ")";
+              return problem;
+            }
+        }
+      solution.message +=
+        " (failed the check, " + first +
+        "; still failing after a re-solve: " + solution.check.describe() + ")";
+      return problem;
+    }
+
     Solution
     Glpk::solve(const LinearProgram &lp) const
     {
@@ -236,18 +338,11 @@ namespace masonry
           const int status = glp_get_status(problem);
           if (status == GLP_OPT)
             {
-              const unsigned int n = lp.n_columns(), m = lp.n_rows();
               solution.status = Status::optimal;
-              solution.x.resize(n);
-              for (unsigned int j = 0; j < n; ++j)
-                solution.x[j] = glp_get_col_prim(problem, j + 1);
-              // GLPK's row duals are d(c^T x)/d(row bound) in the sense of
-              // the problem: our convention already
-              solution.row_duals.resize(m);
-              for (unsigned int i = 0; i < m; ++i)
-                solution.row_duals[i] = glp_get_row_dual(problem, i + 1);
-              solution.objective = lp.objective_value(solution.x);
-              solution.message   = "GLPK: optimal";
+              read_optimum(problem, lp, solution);
+              solution.message = "GLPK: optimal";
+              if (!solution.check.within(check_tolerance()))
+                problem = resolve(problem, lp, parameters, solution);
             }
           else if (status == GLP_NOFEAS)
             {
@@ -285,4 +380,8 @@ namespace masonry
 MASONRY_REGISTER_LP_SOLVER(masonry::lp::Glpk,
                            "glpk",
                            "GNU Linear Programming Kit: primal or dual "
-                           "simplex with scaling and optional presolve.")
+                           "simplex with scaling and optional presolve; an "
+                           "optimum that fails the check on the LP "
+                           "(`Optimality check tolerance') is solved again "
+                           "from its basis on the unscaled problem, then in "
+                           "exact rational arithmetic.")

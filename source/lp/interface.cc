@@ -66,14 +66,30 @@ namespace masonry
         "checks and timing (the same result within the LP tolerances; near "
         "a minimum thickness the starting basis can decide `stands', see "
         "doc/rigid-blocks.md). Unitless flag.");
+      prm.declare_entry(
+        "Optimality check tolerance",
+        "1e-6",
+        dealii::Patterns::Double(1e-12, 1e-2),
+        "Every optimum a solver returns is checked on the LP itself: the "
+        "largest violation of a row or column bound by the primal point, the "
+        "largest dual (or reduced cost) whose sign asks for a bound that is "
+        "infinite, both in the LP's scaled units, and the gap between the "
+        "primal objective and the bound the duals give, relative to the "
+        "objective (at least 1e-6). An optimum with one of them above this "
+        "tolerance is solved again (GLPK: from its basis on the unscaled "
+        "problem, then in exact rational arithmetic; Clp: by the primal "
+        "simplex on the unscaled problem from its basis); if it still fails, "
+        "the run warns with the numbers (screen, summary.json `lp_check'). "
+        "Dimensionless.");
     }
 
     void
     Interface::parse_common_parameters(dealii::ParameterHandler &prm)
     {
-      export_mps_file     = prm.get_bool("Export MPS file");
-      time_limit_seconds  = prm.get_double("Time limit");
-      warm_starts_enabled = prm.get_bool("Warm starts");
+      export_mps_file       = prm.get_bool("Export MPS file");
+      time_limit_seconds    = prm.get_double("Time limit");
+      warm_starts_enabled   = prm.get_bool("Warm starts");
+      check_tolerance_value = prm.get_double("Optimality check tolerance");
     }
 
     void
@@ -102,6 +118,12 @@ namespace masonry
     Interface::warm_starts() const
     {
       return warm_starts_enabled;
+    }
+
+    double
+    Interface::check_tolerance() const
+    {
+      return check_tolerance_value;
     }
   } // namespace lp
 } // namespace masonry

@@ -179,6 +179,15 @@ namespace masonry
       dead_load_magnitude() const;
 
       /**
+       * Write @p lp to @p mps_name in the output directory if `Export MPS
+       * file` is set (and this is not an adaptation's silent evaluation).
+       */
+      void
+      export_lp(const lp::LinearProgram &lp,
+                RunContext              &context,
+                const std::string       &mps_name = "lp.mps") const;
+
+      /**
        * Solve @p lp, timing it into seconds_solve, and write it to
        * @p mps_name in the output directory if `Export MPS file` is set.
        * With @p warm (and `LP solver/Warm starts` true), the solver starts
@@ -191,19 +200,33 @@ namespace masonry
             lp::WarmStart           *warm     = nullptr);
 
       /**
-       * Largest violation of a row bound by the solution (in the LP's
-       * scaled units); a warning on screen above 1e-6.
+       * The check of an optimal @p solution on its LP (lp::Solution::check,
+       * which solve() fills in for every optimum) into the summary:
+       * `lp_max_violation` (largest bound violation), `lp_dual_violation`,
+       * `lp_relative_gap` and `lp_check` (`passed' or `failed'); a warning
+       * on screen with the numbers if it fails `LP solver/Optimality check
+       * tolerance`.
        */
-      double
-      check_solution(const lp::LinearProgram &lp,
-                     const lp::Solution      &solution,
-                     RunContext              &context) const;
+      void
+      check_solution(const lp::Solution &solution, RunContext &context) const;
 
       /** Sizes and timings of the model and the LP into the summary. */
       void
       record(const lp::LinearProgram &lp,
              const lp::Solution      &solution,
              RunContext              &context) const;
+
+      /**
+       * The sizes of the model and the timings so far into the summary
+       * (what record() writes without an LP solution), and the LP's size
+       * if @p lp is given.
+       */
+      void
+      record_model(RunContext &context, const lp::LinearProgram *lp) const;
+
+      /** CPU time of the calling thread, s. */
+      static double
+      thread_cpu_seconds();
 
       /**
        * The block of patch @p patch whose cell contains the parameter point

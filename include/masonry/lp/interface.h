@@ -8,6 +8,7 @@
 
 #include <masonry/core/plugins.h>
 #include <masonry/lp/linear_program.h>
+#include <masonry/lp/solution_check.h>
 
 #include <memory>
 #include <string>
@@ -71,6 +72,30 @@ namespace masonry
       double seconds = 0;
       /** Free text from the back-end (reason of a failure, ...). */
       std::string message;
+      /**
+       * Infeasible, where the back-end says where: per row, its violation
+       * at a point that violates the rows as little as possible in sum
+       * (LP units; empty if not known).
+       */
+      std::vector<double> row_misfit;
+      /**
+       * Unbounded, where the back-end found one: a direction (one value
+       * per column) in which every row and bound stays satisfied and the
+       * objective improves (empty if not known).
+       */
+      std::vector<double> ray;
+      /**
+       * An optimum checked on the LP itself (check_pair() of x and
+       * row_duals): bound violations, dual sign violations and the
+       * duality gap. Meaningful only if @p checked.
+       */
+      PairCheck check;
+      /**
+       * Whether the back-end ran @p check on the optimum it returns (the
+       * `clp` and `glpk` back-ends do, after re-solving a point that
+       * fails it); a caller checks an unchecked optimum itself.
+       */
+      bool checked = false;
     };
 
     /**
@@ -128,7 +153,8 @@ namespace masonry
 
       /**
        * Entries shared by all back-ends: `Export MPS file` (Bool), `Time
-       * limit` (Double, seconds) and `Warm starts` (Bool).
+       * limit` (Double, seconds), `Warm starts` (Bool) and `Optimality
+       * check tolerance` (Double).
        */
       static void
       declare_common_parameters(dealii::ParameterHandler &prm);
@@ -184,6 +210,14 @@ namespace masonry
       bool
       warm_starts() const;
 
+      /**
+       * The largest bound violation, dual sign violation and relative
+       * duality gap of an optimum that passes the check on the LP (entry
+       * `Optimality check tolerance`).
+       */
+      double
+      check_tolerance() const;
+
     protected:
       /** Value of `Export MPS file`. */
       bool export_mps_file = false;
@@ -191,6 +225,8 @@ namespace masonry
       double time_limit_seconds = 0;
       /** Value of `Warm starts`. */
       bool warm_starts_enabled = true;
+      /** Value of `Optimality check tolerance`. */
+      double check_tolerance_value = 1e-6;
     };
   } // namespace lp
 } // namespace masonry

@@ -57,6 +57,15 @@ namespace masonry
       bool maximize = true;
 
       /**
+       * Whether the caller knows that a point satisfies every row and
+       * bound (to the solvers' tolerances), e.g. from the structure of
+       * the problem: then a back-end that finds no optimum need not solve
+       * a phase 1 to tell an unbounded LP from an infeasible one. False
+       * by default (nothing known).
+       */
+      bool known_feasible = false;
+
+      /**
        * Add a variable with objective coefficient @p cost and bounds
        * @p lower <= x <= @p upper (either may be infinite). @p name is used
        * by write_mps() when it is a valid MPS name. Returns the index of the
