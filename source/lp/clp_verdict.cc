@@ -25,12 +25,21 @@ namespace masonry
       /**
        * Solve @p model by the barrier without crossover and return the
        * objective of its interior point (NaN if the barrier did not end
-       * optimal); its primal and dual values stay in @p model.
+       * optimal); its primal and dual values stay in @p model. Only
+       * whether |value| exceeds @p prove or stays below @p refute matters:
+       * the barrier stops as soon as its two objectives, at primal and
+       * dual feasible iterates, bracket the optimum below @p refute, or
+       * (with @p stop_when_proven) beyond @p prove (the value is then the
+       * end of the bracket nearer to 0). Without @p stop_when_proven a
+       * value beyond @p prove is solved to the end, for its point (phase
+       * 1: where the rows cannot be met).
        */
       double
       barrier_value(ClpSimplex   &model,
                     unsigned int &iterations,
-                    const double  proven = 0)
+                    const double  prove,
+                    const double  refute,
+                    const bool    stop_when_proven)
       {
         double     value = std::nan("");
         const auto keep  = [&](const ClpSimplex &point) {
@@ -41,26 +50,25 @@ namespace masonry
             value += c[j] * x[j];
           return true;
         };
-        // with @p proven: stop once the barrier's lower bound (its dual
-        // objective at a dual feasible point) exceeds it
-        bool                                           stopped = false;
-        const std::function<bool(const ClpInterior &)> bound =
+        const std::function<bool(const ClpInterior &)> decided =
           [&](const ClpInterior &b) {
-            if (b.sumDualInfeasibilities() < 1e-9 && b.dualObjective() > proven)
-              {
-                value = b.dualObjective();
-                return true;
-              }
-            return false;
+            if (b.sumPrimalInfeasibilities() > 1e-9 ||
+                b.sumDualInfeasibilities() > 1e-9)
+              return false;
+            const double p = b.primalObjective(), d = b.dualObjective();
+            const double low = std::min(p, d), high = std::max(p, d);
+            if (stop_when_proven && low > prove)
+              value = low;
+            else if (stop_when_proven && high < -prove)
+              value = high;
+            else if (low > -refute && high < refute)
+              value = 0.5 * (low + high);
+            else
+              return false;
+            return true;
           };
-        barrier_with_crossover(model,
-                               keep,
-                               false,
-                               1e-9,
-                               proven > 0 ?
-                                 bound :
-                                 std::function<bool(const ClpInterior &)>(),
-                               &stopped);
+        bool stopped = false;
+        barrier_with_crossover(model, keep, false, 1e-9, decided, &stopped);
         iterations += model.numberIterations();
         return value;
       }
@@ -138,7 +146,11 @@ namespace masonry
               if (farkas.columnUpper()[j] > big)
                 farkas.setColumnUpper(j, 1.);
             }
-          const double value = barrier_value(farkas, v.iterations);
+          const double value = barrier_value(farkas,
+                                             v.iterations,
+                                             1e-5 * phase_1_scale,
+                                             1e-6 * phase_1_scale,
+                                             false);
           if (std::isnan(value))
             {
               v.description = "phase 1 did not converge";
@@ -217,8 +229,8 @@ namespace masonry
       ray.setOptimizationDirection(1.);
       SingletonRows reduced = without_singleton_rows(ray);
       ClpSimplex   &solved  = reduced.model ? *reduced.model : ray;
-      const double  value =
-        barrier_value(solved, v.iterations, 1e-5 * ray_scale);
+      const double  value   = barrier_value(
+        solved, v.iterations, 1e-5 * ray_scale, 1e-6 * ray_scale, true);
       if (std::isnan(value))
         {
           v.description += "ray LP did not converge";
