@@ -61,14 +61,14 @@ main(int argc, char **argv)
 
   // minimum thickness, 4 blocks per half
   const masonry::Json a        = run("thickness", thickness_prm("genetic"));
-  const double        t_over_R = a.at("minimum_thickness").as_number() / R;
+  const double        t_over_R = a.at("minimum_thickness").get<double>() / R;
   check(relative(t_over_R, reference) < 5e-3,
         "adapted 4 blocks per half: t/R within 0.5 % of 0.107478");
   double angle = -1;
   for (unsigned int i = 0; i < a.at("cracks").size(); ++i)
     {
       const auto  &p = a.at("cracks").at(i).at("position");
-      const double x = p.at(0).as_number(), z = p.at(2).as_number();
+      const double x = p.at(0).get<double>(), z = p.at(2).get<double>();
       const double d = std::atan2(std::abs(x), z) * 180 / M_PI;
       if (x < 0 && d > 20 && d < 80)
         angle = d;
@@ -76,23 +76,23 @@ main(int argc, char **argv)
   check(std::abs(angle - hinge) < 1,
         "adapted: haunch hinge within 1° of 54.48° from the crown");
   const auto &ad = a.at("adaptation");
-  check(ad.at("best_fitness").as_number() >=
-          ad.at("uniform_fitness").as_number(),
+  check(ad.at("best_fitness").get<double>() >=
+          ad.at("uniform_fitness").get<double>(),
         "adapted thickness factor ≥ uniform mesh's");
   const masonry::Json again = run("thickness_again", thickness_prm("genetic"));
-  bool                same  = again.at("minimum_thickness").as_number() ==
-                a.at("minimum_thickness").as_number() &&
-              again.at("adaptation").at("evaluations").as_number() ==
-                ad.at("evaluations").as_number();
+  bool                same  = again.at("minimum_thickness").get<double>() ==
+                a.at("minimum_thickness").get<double>() &&
+              again.at("adaptation").at("evaluations").get<double>() ==
+                ad.at("evaluations").get<double>();
   for (unsigned int i = 0; i < ad.at("best_genes").size(); ++i)
-    same = same && again.at("adaptation").at("best_genes").at(i).as_number() ==
-                     ad.at("best_genes").at(i).as_number();
+    same = same && again.at("adaptation").at("best_genes").at(i).get<double>() ==
+                     ad.at("best_genes").at(i).get<double>();
   check(same, "the same seed reproduces the result exactly");
 
   // settlement, 6 blocks, against a uniform mesh of 512 blocks
   const double fine = run("fine", arch_prm(R, 1, 256, "0; 0; -0.01"))
                         .at("external_work")
-                        .as_number();
+                        .get<double>();
   for (const std::string optimiser :
        {"genetic", "differential evolution", "cmaes", "particle swarm"})
     {
@@ -100,11 +100,11 @@ main(int argc, char **argv)
         run("settlement",
             arch_prm(R, 1, 3, "0; 0; -0.01") + adaptation(optimiser));
       const auto &sa = s.at("adaptation");
-      check(sa.at("best_fitness").as_number() >=
-              sa.at("uniform_fitness").as_number(),
+      check(sa.at("best_fitness").get<double>() >=
+              sa.at("uniform_fitness").get<double>(),
             optimiser + ": adapted work ≥ uniform mesh's");
       if (optimiser == "genetic")
-        check(relative(s.at("external_work").as_number(), fine) < 5e-3,
+        check(relative(s.at("external_work").get<double>(), fine) < 5e-3,
               "genetic, 6 blocks adapted: work within 0.5 % of 512 uniform "
               "blocks");
     }
@@ -126,11 +126,11 @@ main(int argc, char **argv)
     "  set Mesh genes = vertices\n  set Population size = 8\n"
     "  set Generations = 4\nend\n");
   const auto &va = v.at("adaptation");
-  check(va.at("genes").as_number() == 2 * 1 + 1 + 2 * 2 * 1 * 1,
+  check(va.at("genes").get<double>() == 2 * 1 + 1 + 2 * 2 * 1 * 1,
         "vertices: 2 u-lines, 1 v-line and 2 offsets per interior vertex");
-  check(va.at("failed_evaluations").as_number() == 0,
+  check(va.at("failed_evaluations").get<double>() == 0,
         "vertices: every mesh tried is valid");
-  check(va.at("best_fitness").as_number() >=
-          va.at("uniform_fitness").as_number(),
+  check(va.at("best_fitness").get<double>() >=
+          va.at("uniform_fitness").get<double>(),
         "vertices: adapted work ≥ uniform mesh's");
 }

@@ -63,8 +63,8 @@ namespace
     bool        ok = s.size() > 1;
     for (unsigned int k = 1; k < s.size(); ++k)
       {
-        const double a = s.at(k - 1).at("fitness").as_number();
-        const double b = s.at(k).at("fitness").as_number();
+        const double a = s.at(k - 1).at("fitness").get<double>();
+        const double b = s.at(k).at("fitness").get<double>();
         ok             = ok && b >= a - 1e-9 * std::abs(a);
       }
     return ok;
@@ -75,9 +75,9 @@ namespace
   bool
   between(const masonry::Json &result, const double upper)
   {
-    const double w    = result.at("objective").as_number();
+    const double w    = result.at("objective").get<double>();
     const auto  &s    = result.at("adaptation").at("stages");
-    const double last = s.at(s.size() - 1).at("fitness").as_number();
+    const double last = s.at(s.size() - 1).at("fitness").get<double>();
     return w <= upper * (1 + 1e-9) && w >= last - 1e-9 * std::abs(w);
   }
 } // namespace
@@ -89,36 +89,36 @@ main(int argc, char **argv)
   const double                             R = 5;
 
   const double fine =
-    run("fine", arch_prm(R, 1, 256, "0; 0; -0.01")).at("objective").as_number();
+    run("fine", arch_prm(R, 1, 256, "0; 0; -0.01")).at("objective").get<double>();
   const double finest = run("finest", arch_prm(R, 1, 64, "0; 0; -0.01"))
                           .at("objective")
-                          .as_number();
+                          .get<double>();
   const masonry::Json a =
     run("arch", arch_prm(R, 1, 2, "0; 0; -0.01") + refinement(5, 0.5));
   const auto  &aa = a.at("adaptation");
-  const double w  = a.at("objective").as_number();
+  const double w  = a.at("objective").get<double>();
   check(aa.at("stages").size() == 5, "arch: 5 stages solved");
   check(monotone(aa), "arch: the objective never decreases between stages");
-  check(w >= aa.at("stages").at(4).at("fitness").as_number() - 1e-9 * w,
+  check(w >= aa.at("stages").at(4).at("fitness").get<double>() - 1e-9 * w,
         "arch: the final mesh is at least as good as the last stage's");
   check(w <= finest * (1 + 1e-9),
         "arch: at most the objective of uniform 64 blocks per half");
   check(relative(w, fine) < 5e-3,
         "arch: work within 0.5 % of 512 uniform blocks");
-  check(a.at("n_blocks").as_number() < 128 / 3.,
+  check(a.at("n_blocks").get<double>() < 128 / 3.,
         "arch: fewer than a third of the blocks of uniform 64 per half");
 
   const double uniform4 =
-    run("barrel_4", barrel(4)).at("objective").as_number();
+    run("barrel_4", barrel(4)).at("objective").get<double>();
   const masonry::Json b  = run("barrel_all", barrel(2) + refinement(1, 1));
   const auto         &ba = b.at("adaptation");
-  check(ba.at("blocks_along_u").as_number() == 4 &&
-          ba.at("blocks_along_v").as_number() == 4,
+  check(ba.at("blocks_along_u").get<double>() == 4 &&
+          ba.at("blocks_along_v").get<double>() == 4,
         "barrel, marked fraction 1: every strip split (4 x 4 per half)");
-  check(relative(b.at("objective").as_number(), uniform4) < 1e-8,
+  check(relative(b.at("objective").get<double>(), uniform4) < 1e-8,
         "barrel, marked fraction 1: the objective of uniform 4 x 4 (1e-8)");
   const double uniform8 =
-    run("barrel_8", barrel(8)).at("objective").as_number();
+    run("barrel_8", barrel(8)).at("objective").get<double>();
   const masonry::Json c = run("barrel_half", barrel(2) + refinement(2, 0.5));
   check(monotone(c.at("adaptation")),
         "barrel, marked fraction 0.5: the objective never decreases");
@@ -129,9 +129,9 @@ main(int argc, char **argv)
   // `Split = blocks' (local, non-conforming refinement)
   const masonry::Json d =
     run("barrel_blocks_all", barrel(2) + refinement(1, 1, "blocks"));
-  check(d.at("n_blocks").as_number() == 32,
+  check(d.at("n_blocks").get<double>() == 32,
         "barrel, blocks, marked fraction 1: every block split (32 blocks)");
-  check(relative(d.at("objective").as_number(), uniform4) < 1e-8,
+  check(relative(d.at("objective").get<double>(), uniform4) < 1e-8,
         "barrel, blocks, marked fraction 1: the objective of uniform 4 x 4 "
         "(1e-8)");
   const masonry::Json e =
@@ -141,7 +141,7 @@ main(int argc, char **argv)
   check(between(e, uniform8),
         "barrel, blocks, marked fraction 0.5: between the last stage and "
         "uniform 8 x 8");
-  check(e.at("n_blocks").as_number() < 128,
+  check(e.at("n_blocks").get<double>() < 128,
         "barrel, blocks, marked fraction 0.5: fewer blocks than uniform "
         "8 x 8");
 }

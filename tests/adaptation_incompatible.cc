@@ -24,8 +24,8 @@ namespace
   stopped(const masonry::Json &s)
   {
     const auto &a = s.at("adaptation");
-    return s.at("status").as_string() == "incompatible" &&
-           a.at("evaluations").as_number() == 1 &&
+    return s.at("status").get<std::string>() == "incompatible" &&
+           a.at("evaluations").get<double>() == 1 &&
            !a.contains("best_fitness") && !a.contains("uniform_fitness") &&
            a.contains("stopped");
   }
@@ -35,7 +35,7 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  check(run("uniform", barrel).at("status").as_string() == "incompatible",
+  check(run("uniform", barrel).at("status").get<std::string>() == "incompatible",
         "uniform mesh: incompatible");
   check(stopped(run("genetic",
                     barrel + "subsection Adaptation\n"

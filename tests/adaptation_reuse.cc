@@ -73,7 +73,7 @@ namespace
     const auto &gb   = b.at("adaptation").at("best_genes");
     bool        same = ga.size() == gb.size();
     for (unsigned int i = 0; same && i < ga.size(); ++i)
-      same = ga.at(i).as_number() == gb.at(i).as_number();
+      same = ga.at(i).get<double>() == gb.at(i).get<double>();
     return same;
   }
 } // namespace
@@ -89,34 +89,34 @@ main(int argc, char **argv)
   const masonry::Json b = run("settlement_scratch", settlement + adaptation(0));
   const auto         &aa = a.at("adaptation");
   const auto         &ba = b.at("adaptation");
-  check(aa.at("best_fitness").as_number() == ba.at("best_fitness").as_number(),
+  check(aa.at("best_fitness").get<double>() == ba.at("best_fitness").get<double>(),
         "settlement: the same best fitness with and without reuse");
   check(same_genes(a, b), "settlement: the same best genes");
-  check(aa.at("evaluations").as_number() == ba.at("evaluations").as_number(),
+  check(aa.at("evaluations").get<double>() == ba.at("evaluations").get<double>(),
         "settlement: the same number of evaluations");
-  check(aa.at("repeated_evaluations").as_number() > 0 &&
-          ba.at("repeated_evaluations").as_number() == 0,
+  check(aa.at("repeated_evaluations").get<double>() > 0 &&
+          ba.at("repeated_evaluations").get<double>() == 0,
         "settlement: repeated gene vectors looked up with reuse only");
 
   const masonry::Json c  = run("thickness_reuse", thickness_prm(true));
   const masonry::Json d  = run("thickness_scratch", thickness_prm(false));
-  const double        fc = c.at("adaptation").at("best_fitness").as_number();
-  const double        fd = d.at("adaptation").at("best_fitness").as_number();
+  const double        fc = c.at("adaptation").at("best_fitness").get<double>();
+  const double        fd = d.at("adaptation").at("best_fitness").get<double>();
   check(fc == fd,
         "minimum thickness: the same best factor with and without reuse");
-  check(c.at("minimum_thickness_factor").as_number() == fc,
+  check(c.at("minimum_thickness_factor").get<double>() == fc,
         "minimum thickness: the best mesh analysed again gives its fitness");
 
   const masonry::Json w =
     run("thickness_warm", thickness_prm(true, true, 8, 0));
   const masonry::Json e =
     run("thickness_cold", thickness_prm(true, false, 8, 0));
-  const double fw = w.at("minimum_thickness_factor").as_number();
-  const double fe = e.at("minimum_thickness_factor").as_number();
+  const double fw = w.at("minimum_thickness_factor").get<double>();
+  const double fe = e.at("minimum_thickness_factor").get<double>();
   check(std::abs(fe - fw) <= 1e-5 * fw,
         "minimum thickness: the same factor with and without warm starts "
         "(1e-5)");
-  check(e.at("lp_iterations").as_number() > w.at("lp_iterations").as_number(),
+  check(e.at("lp_iterations").get<double>() > w.at("lp_iterations").get<double>(),
         "minimum thickness: the run without warm starts needs more simplex "
         "iterations");
 }

@@ -58,23 +58,23 @@ main(int argc, char **argv)
     {
       auto s = run(name, wall("english", name, 7, gap));
       std::cout << name << " wall, gap " << gap << " m: bed voids "
-                << s["bed_void_area"].as_number() << " m^2 (hand " << n * strip
+                << s["bed_void_area"].get<double>() << " m^2 (hand " << n * strip
                 << ")\n";
-      check(relative(s["bed_void_area"].as_number(), n * strip) < 1e-9,
+      check(relative(s["bed_void_area"].get<double>(), n * strip) < 1e-9,
             name + " wall: bed voids = collar planes x 6 bed joints x 0.44 "
                    "m x (h_m + 2 g)");
     }
   auto s  = run("single", wall("stretcher", "double", 7, gap));
   auto s0 = run("single0", wall("stretcher", "double", 7, 0));
   check(!s.contains("n_void_cells") &&
-          relative(s["peak_stress"].as_number(),
-                   s0["peak_stress"].as_number()) < 1e-12,
+          relative(s["peak_stress"].get<double>(),
+                   s0["peak_stress"].get<double>()) < 1e-12,
         "single leaf: no collar joint, no void, the same force");
   // two courses of the double wall (one bed joint), elastic
   auto         full = run("two0", wall("english", "double", 2, 0));
   auto         gapd = run("two", wall("english", "double", 2, gap));
-  const double f0   = full["peak_stress"].as_number(),
-               f    = gapd["peak_stress"].as_number();
+  const double f0   = full["peak_stress"].get<double>(),
+               f    = gapd["peak_stress"].get<double>();
   std::cout << "two courses: " << f / 1e6 << " MPa with the gap, " << f0 / 1e6
             << " MPa full\n";
   check(f < f0, "two courses: the gap lowers the force");

@@ -94,10 +94,10 @@ main(int argc, char **argv)
     check(err < 1e-6,
           "stack prism: stress = closed-form cap curve at every step (1e-6 "
           "of sbar_p)");
-    check(relative(summary["peak_stress"].as_number(), sp) < 5e-3,
+    check(relative(summary["peak_stress"].get<double>(), sp) < 5e-3,
           "stack prism: peak = cap strength 10.5 MPa (0.5 %, step "
           "sampling)");
-    check(relative(summary["initial_modulus"].as_number(), H / c) < 1e-6,
+    check(relative(summary["initial_modulus"].get<double>(), H / c) < 1e-6,
           "stack prism: initial modulus H / (H / E + 2 / k_n)");
   }
   {
@@ -109,7 +109,7 @@ main(int argc, char **argv)
                                      "    set Mortar Young's modulus = 2e9\n"
                                      "  end\n"));
     const double c       = H / E + 2 / 2.5e11;
-    check(relative(summary["initial_modulus"].as_number(), H / c) < 1e-6,
+    check(relative(summary["initial_modulus"].get<double>(), H / c) < 1e-6,
           "stack prism: penalties from E_b, E_m, nu and h_m replace the "
           "given Normal stiffness");
     // the derived values in summary.json and log.txt: k_s from the shear
@@ -117,11 +117,11 @@ main(int argc, char **argv)
     const double Gb = 10e9 / 2.3, Gm = 2e9 / 2.4,
                  ks = Gb * Gm / (0.01 * (Gb - Gm));
     auto &d         = summary["derived_values"]["interface_law"];
-    check(relative(d["normal_stiffness"].as_number(), 2.5e11) < 1e-12 &&
-            relative(d["shear_stiffness"].as_number(), ks) < 1e-12,
+    check(relative(d["normal_stiffness"].get<double>(), 2.5e11) < 1e-12 &&
+            relative(d["shear_stiffness"].get<double>(), ks) < 1e-12,
           "summary.json: derived k_n = 2.5e11 Pa/m and k_s = 1.0309e11 "
           "Pa/m");
-    check(relative(d["cap_middle_jump"].as_number(), km) < 1e-12,
+    check(relative(d["cap_middle_jump"].get<double>(), km) < 1e-12,
           "summary.json: derived kappa_m from G_fc");
     std::ifstream     log("results/prism_moduli/log.txt");
     std::stringstream text;

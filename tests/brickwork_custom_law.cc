@@ -183,7 +183,7 @@ main(int argc, char **argv)
   double worst = 0;
   for (unsigned int i = 1; i < a.size(); ++i)
     worst = std::max(worst, std::abs(a[i][4] - stress[i]) / c);
-  check(full.at("status").as_string() == "completed" && a.size() > 10 &&
+  check(full.at("status").get<std::string>() == "completed" && a.size() > 10 &&
           kappa.back() > 0 && worst < 1e-5,
         "cyclic curve = theory of rigid bricks on the test law: elastic "
         "(4 k_s + k_n) / 5, slip past the friction limit, hardening, "
@@ -224,8 +224,8 @@ main(int argc, char **argv)
   unsigned int most       = 0;
   for (const auto &row : d)
     most = std::max(most, static_cast<unsigned int>(row[5]));
-  check(deformable.at("status").as_string() == "completed" &&
-          deformable.at("cut_backs").as_number() == 0 && most <= 6,
+  check(deformable.at("status").get<std::string>() == "completed" &&
+          deformable.at("cut_backs").get<double>() == 0 && most <= 6,
         "bricks of 10 GPa, no friction: Newton converges in every step "
         "without cut-backs in at most 6 iterations (the assembly uses the "
         "law's tangent of the slipping joints)");
@@ -237,8 +237,8 @@ main(int argc, char **argv)
     run("resumed", prm(wallette.str() + "set Resume = true\n", law.str()));
   const auto   b    = curve("resumed");
   const double diff = curve_difference(a, b);
-  check(stopped.at("status").as_string() == "interrupted" &&
-          resumed.at("status").as_string() == "completed" && diff < 1e-12,
+  check(stopped.at("status").get<std::string>() == "interrupted" &&
+          resumed.at("status").get<std::string>() == "completed" && diff < 1e-12,
         "checkpointed after 11 steps and resumed: the curve of the "
         "uninterrupted run (1e-12)");
   check(contains(pvd_entries("results/resumed/solution.pvd"),

@@ -108,7 +108,7 @@ namespace
   check_cycles()
   {
     const masonry::Json s = run("hex", prm(hex, material()));
-    check(s.at("status").as_string() == "completed", "hex: completed");
+    check(s.at("status").get<std::string>() == "completed", "hex: completed");
     {
       std::ifstream in("results/hex/cycles.csv");
       std::string   line;
@@ -173,7 +173,7 @@ namespace
       "0.0035\nset Cycles per amplitude = 2\nset Target strain = "
       "0.0035\nset Number of steps = 300\nset Unloading stress = 0\n";
     const masonry::Json r = run("hex_repeat", prm(repeat, material()));
-    check(r.at("status").as_string() == "completed", "hex_repeat: completed");
+    check(r.at("status").get<std::string>() == "completed", "hex_repeat: completed");
     std::ifstream in("results/hex_repeat/envelope.csv");
     std::string   line;
     std::getline(in, line);
@@ -221,7 +221,7 @@ namespace
           << f_t / E0 + 30 * w << "\nset Number of steps = 2000\n";
         const std::string name = "row_" + std::to_string(n);
         const auto        r    = run(name, prm(t.str(), material(nu0)));
-        const double      work = r.at("external_work").as_number();
+        const double      work = r.at("external_work").get<double>();
         check(relative(work, G_f * 0.01) < 1e-3,
               name + ": work to separation = G_f x area (1e-3)");
         // the curve is the closed-form tension envelope at its strains
@@ -235,8 +235,8 @@ namespace
           }
         check(envelope < 1e-8,
               name + ": the curve is the tension envelope (1e-8 of f_t)");
-        check(r.at("peak_stress").as_number() <= f_t * (1 + 1e-12) &&
-                r.at("peak_stress").as_number() > 0.99 * f_t,
+        check(r.at("peak_stress").get<double>() <= f_t * (1 + 1e-12) &&
+                r.at("peak_stress").get<double>() > 0.99 * f_t,
               name + ": peak stress within 1 % below f_t (sampled)");
         if (n == 4)
           {
@@ -261,8 +261,8 @@ namespace
                 last = k;
               }
             check(ok, "deletion: cells go after the threshold, 3 per step");
-            check(d.at("status").as_string() == "completed" &&
-                    d.at("deleted_cells").as_number() == 16 &&
+            check(d.at("status").get<std::string>() == "completed" &&
+                    d.at("deleted_cells").get<double>() == 16 &&
                     rows.back()[4] == 0,
                   "deletion: all 16 cells gone, the run completes, force 0");
             // `Collapse stress ratio' 0.05: the run ends at the first step
@@ -274,12 +274,12 @@ namespace
                   prm(t.str() + "set Collapse stress ratio = 0.05\n",
                       material(nu0)));
             const auto   cr   = curve("collapse");
-            const double peak = c.at("peak_stress").as_number();
+            const double peak = c.at("peak_stress").get<double>();
             const double e_collapse =
               f_t / E0 + w * std::log(f_t / (0.05 * peak));
             const auto &last_row = cr.back(), &before = cr[cr.size() - 2];
-            check(c.at("status").as_string() == "completed" &&
-                    c.at("message").as_string().rfind("the specimen collapsed",
+            check(c.at("status").get<std::string>() == "completed" &&
+                    c.at("message").get<std::string>().rfind("the specimen collapsed",
                                                       0) == 0,
                   "collapse: status completed, the message says so");
             check(last_row[4] < 0.05 * peak && before[4] >= 0.05 * peak &&
@@ -298,13 +298,13 @@ namespace
     run("full", prm(short_hex, material()));
     const auto stopped =
       run("resumed", prm(short_hex + "set Maximum steps = 37\n", material()));
-    check(stopped.at("status").as_string() == "interrupted",
+    check(stopped.at("status").get<std::string>() == "interrupted",
           "resume: the first part stops as interrupted");
     const auto resumed =
       run("resumed", prm(short_hex + "set Resume = true\n", material()));
     const auto   a = curve("full"), b = curve("resumed");
     const double diff = curve_difference(a, b);
-    check(resumed.at("status").as_string() == "completed" && diff < 1e-12,
+    check(resumed.at("status").get<std::string>() == "completed" && diff < 1e-12,
           "resume: the resumed run reproduces the uninterrupted curve "
           "(1e-12)");
 

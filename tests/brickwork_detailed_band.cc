@@ -149,8 +149,8 @@ main(int argc, char **argv)
         at   = i;
       }
   peak /= 1e6;
-  check(summary.at("model").as_string() == "detailed" &&
-          summary.at("status").as_string() == "completed",
+  check(summary.at("model").get<std::string>() == "detailed" &&
+          summary.at("status").get<std::string>() == "completed",
         "the detailed model ran to the end");
   check(at + 1 < c.size() && final_stress / 1e6 < 0.8 * peak,
         "the wallette is past its peak at the end (stress below 0.8 x "
@@ -158,7 +158,7 @@ main(int argc, char **argv)
   const double f_c = summary.at("derived_values")
                        .at("brick_material")
                        .at("uniaxial_compressive_strength")
-                       .as_number();
+                       .get<double>();
   check(std::abs(f_c - 0.8 * f_b * 1e6) <= 1e-9 * f_c,
         "the unit law's uniaxial strength is 0.8 f_b (derived, printed)");
   check(peak >= low, "peak above 0.85 x Kaushik's mean");

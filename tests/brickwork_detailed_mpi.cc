@@ -90,29 +90,29 @@ main(int argc, char **argv)
     {
       const masonry::Json one =
         run("ranks_one", prm(wallette, plugins), MPI_COMM_SELF);
-      std::cout << "ranks: " << all.at("n_mpi_ranks").as_number() << " and "
-                << one.at("n_mpi_ranks").as_number() << "\n";
+      std::cout << "ranks: " << all.at("n_mpi_ranks").get<double>() << " and "
+                << one.at("n_mpi_ranks").get<double>() << "\n";
       const auto a = curve("ranks_all"), b = curve("ranks_one"),
                  c = curve("resumed");
-      check(all.at("status").as_string() == "completed" &&
-              one.at("status").as_string() == "completed" &&
-              resumed.at("status").as_string() == "completed",
+      check(all.at("status").get<std::string>() == "completed" &&
+              one.at("status").get<std::string>() == "completed" &&
+              resumed.at("status").get<std::string>() == "completed",
             "the three runs complete");
       // the mortar layers yield and damage, and, confined by the units,
       // carry more than their uniaxial strength f_m = 5 MPa
-      check(one.at("max_brick_mortar_damage_compression").as_number() > 0.5,
+      check(one.at("max_brick_mortar_damage_compression").get<double>() > 0.5,
             "the mortar layers damage in compression (largest damage > 0.5)");
-      check(one.at("peak_stress").as_number() > 5e6,
+      check(one.at("peak_stress").get<double>() > 5e6,
             "the prism carries more than the mortar's uniaxial strength");
       check(curve_difference(a, b) < 1e-6,
             "same curve (stress, damages of joints, units and mortar) on 1 "
             "and N ranks (1e-6)");
       check(curve_difference(a, c) < 1e-12,
             "the resumed run equals the uninterrupted one (1e-12)");
-      check(one.at("n_mortar_cells").as_number() ==
-                all.at("n_mortar_cells").as_number() &&
-              one.at("n_splitting_interface_faces").as_number() ==
-                all.at("n_splitting_interface_faces").as_number(),
+      check(one.at("n_mortar_cells").get<double>() ==
+                all.at("n_mortar_cells").get<double>() &&
+              one.at("n_splitting_interface_faces").get<double>() ==
+                all.at("n_splitting_interface_faces").get<double>(),
             "the same mortar cells and splitting faces");
     }
   MPI_Barrier(MPI_COMM_WORLD);

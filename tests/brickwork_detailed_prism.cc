@@ -244,15 +244,15 @@ namespace
         run("hilsdorf", prm(plastic_prism(8, 0.0062), plastic_laws));
       const double k =
         summary["derived_values"]["mortar_material"]["confinement_coefficient"]
-          .as_number();
+          .get<double>();
       const double a = 1 / (k * r), f = fb * (fbt + a * fm) / (fbt + a * fb);
-      const double peak = summary["peak_stress"].as_number();
+      const double peak = summary["peak_stress"].get<double>();
       std::cout << std::setprecision(4) << "Hilsdorf: k = " << k << ", "
                 << f * 1e-6 << " MPa\n";
       check(relative(peak, f) < 0.03,
             "peak = Hilsdorf's prism strength with the laws' k, f_bt, f_b, "
             "f_m (3 %)");
-      check(summary["final_stress"].as_number() < 0.95 * peak,
+      check(summary["final_stress"].get<double>() < 0.95 * peak,
             "the prism is past its peak at the end");
     }
     {
@@ -263,14 +263,14 @@ namespace
       auto         summary = run("plateau", prm(plastic_prism(4, 0.005), laws));
       const double k =
         summary["derived_values"]["mortar_material"]["confinement_coefficient"]
-          .as_number();
+          .get<double>();
       const double ratio = num / (1 - num);
       const double sp    = fm / (1 - k * ratio);
-      const double peak  = summary["peak_stress"].as_number();
+      const double peak  = summary["peak_stress"].get<double>();
       const double sz =
-        std::abs(summary["centre_mortar_stress_zz"].as_number());
-      const double p = -summary["centre_mortar_stress_xx"].as_number();
-      const double t = summary["centre_unit_stress_xx"].as_number();
+        std::abs(summary["centre_mortar_stress_zz"].get<double>());
+      const double p = -summary["centre_mortar_stress_xx"].get<double>();
+      const double t = summary["centre_unit_stress_xx"].get<double>();
       std::cout << "non-dilatant mortar: plateau " << sp * 1e-6 << " MPa\n";
       check(peak < sp * (1 + 1e-4) && relative(peak, sp) < 1e-2,
             "non-dilatant mortar: peak tends to f_m / (1 - k nu_m / (1 - "
@@ -283,8 +283,8 @@ namespace
       check(relative(t, p * nm * hm / (nb * hb)) < 0.02,
             "unit's lateral tension at the centre = p n_m h_m / (n_b h_b) "
             "(2 %)");
-      check(summary["max_brick_damage_tension"].as_number() == 0 &&
-              summary["max_brick_damage_compression"].as_number() < 0.01,
+      check(summary["max_brick_damage_tension"].get<double>() == 0 &&
+              summary["max_brick_damage_compression"].get<double>() < 0.01,
             "non-dilatant mortar: the units stay intact");
     }
   }
@@ -310,10 +310,10 @@ main(int argc, char **argv)
   std::cout << "r = " << r << ", beta = " << beta << "\n";
 
   auto         summary  = run("prism", prism(2.0, 16, true));
-  const double sz       = summary["centre_unit_stress_zz"].as_number();
-  const double sxb      = summary["centre_unit_stress_xx"].as_number(),
-               syb      = summary["centre_unit_stress_yy"].as_number(),
-               sxm      = summary["centre_mortar_stress_xx"].as_number();
+  const double sz       = summary["centre_unit_stress_zz"].get<double>();
+  const double sxb      = summary["centre_unit_stress_xx"].get<double>(),
+               syb      = summary["centre_unit_stress_yy"].get<double>(),
+               sxm      = summary["centre_mortar_stress_xx"].get<double>();
   const double e_unit   = std::max(relative(sxb, beta * std::abs(sz)),
                                  relative(syb, beta * std::abs(sz)));
   const double e_mortar = relative(sxm, -r * beta * std::abs(sz));
@@ -330,26 +330,26 @@ main(int argc, char **argv)
   check(e_mortar < 1e-3,
         "centre of the mortar layer: sigma_x = -r beta |sigma_z| (0.1 %)");
   const double E = H / compliance;
-  check(relative(summary["initial_modulus"].as_number(), E) < 1e-3,
+  check(relative(summary["initial_modulus"].get<double>(), E) < 1e-3,
         "vertical stiffness: series of restrained layers and interfaces "
         "(0.1 %)");
   // the plain series of the layers' moduli (no lateral restraint) is 4.5 %
   // softer: the restraint is measurable
   const double plain = H / (nb * hb / Eb + nm * hm / Em + 2 * nm / kn);
-  check(relative(summary["initial_modulus"].as_number(), plain) > 0.03,
+  check(relative(summary["initial_modulus"].get<double>(), plain) > 0.03,
         "vertical stiffness: differs from the unrestrained series by more "
         "than 3 %");
-  check(relative(summary["height"].as_number(), H) < 1e-12 &&
-          relative(summary["gross_area"].as_number(), 4.0) < 1e-12,
+  check(relative(summary["height"].get<double>(), H) < 1e-12 &&
+          relative(summary["gross_area"].get<double>(), 4.0) < 1e-12,
         "height 3 h_b + 2 h_m, gross area of the unit");
-  check(summary["n_mortar_cells"].as_number() == 2 * 16 * 16,
+  check(summary["n_mortar_cells"].get<double>() == 2 * 16 * 16,
         "two mortar layers of one cell");
-  check(summary["n_bed_interface_faces"].as_number() == 4 * 16 * 16,
+  check(summary["n_bed_interface_faces"].get<double>() == 4 * 16 * 16,
         "four unit-mortar interfaces");
   auto &d = summary["derived_values"]["detailed_model"];
-  check(relative(d["lourenco_rots_normal_stiffness"].as_number(),
+  check(relative(d["lourenco_rots_normal_stiffness"].get<double>(),
                  Eb * Em / (hm * (Eb - Em))) < 1e-12 &&
-          relative(d["contact_compliance_ratio"].as_number(),
+          relative(d["contact_compliance_ratio"].get<double>(),
                    (2 / kn) / (hm / Em)) < 1e-12,
         "derived values: Lourenco-Rots stiffness (not used), contact "
         "compliance ratio");

@@ -54,10 +54,10 @@ main(int argc, char **argv)
                 "set Number of steps = 1\nset Target strain = 1e-5\n",
                 "subsection Bond\n" + c.bond +
                   "end\nsubsection Interface law\nset Law = elastic\nend\n"));
-      check(s.at("n_bricks").as_number() == c.bricks &&
-              s.at("n_bed_joints").as_number() == c.bed &&
-              s.at("n_head_joints").as_number() == c.head &&
-              s.at("n_collar_joints").as_number() == c.collar,
+      check(s.at("n_bricks").get<double>() == c.bricks &&
+              s.at("n_bed_joints").get<double>() == c.bed &&
+              s.at("n_head_joints").get<double>() == c.head &&
+              s.at("n_collar_joints").get<double>() == c.collar,
             c.bond.substr(14, c.bond.find('\n') - 14) +
               (c.name == "count_double" ? " double" :
                c.name == "count_triple" ? " triple" :
@@ -97,11 +97,11 @@ main(int argc, char **argv)
           const double        H = courses * h_b;
           const double expected = H / (courses * h_b / E + (courses - 1) / k_n);
           const double error =
-            relative(s.at("initial_modulus").as_number(), expected);
+            relative(s.at("initial_modulus").get<double>(), expected);
           const double error_peak =
-            relative(s.at("peak_stress").as_number(), expected * 0.002);
+            relative(s.at("peak_stress").get<double>(), expected * 0.002);
           const double error_gauge =
-            relative(s.at("initial_modulus_gauge").as_number(), expected);
+            relative(s.at("initial_modulus_gauge").get<double>(), expected);
           check(error < 1e-8 && error_peak < 1e-8 && error_gauge < 1e-8,
                 name + ": modulus (height and full-height gauge) and final "
                        "stress = series formula to 1e-8");
@@ -128,8 +128,8 @@ main(int argc, char **argv)
               "set Elements along the length = 2\n",
               p.str()));
     const double H = 3 * h_b, expected = H / (3 * h_b / E + 2 / k_n);
-    check(relative(s.at("initial_modulus").as_number(), expected) < 1e-8 &&
-            s.at("interface_evaluations_elastic_fraction").as_number() == 1,
+    check(relative(s.at("initial_modulus").get<double>(), expected) < 1e-8 &&
+            s.at("interface_evaluations_elastic_fraction").get<double>() == 1,
           "stack prism, bilinear joints in compression: series modulus to "
           "1e-8, every interface evaluation skipped (elastic fraction 1)");
   }
@@ -147,9 +147,9 @@ main(int argc, char **argv)
               "set Platen lateral restraint = free\nset Joints = bonded\n"
               "set Target strain = 0.001\nset Number of steps = 1\n",
               p.str()));
-    check(relative(s.at("initial_modulus").as_number(), E) < 1e-8 &&
-            s.at("n_bed_interface_faces").as_number() == 0 &&
-            s.at("n_head_interface_faces").as_number() == 0,
+    check(relative(s.at("initial_modulus").get<double>(), E) < 1e-8 &&
+            s.at("n_bed_interface_faces").get<double>() == 0 &&
+            s.at("n_head_interface_faces").get<double>() == 0,
           "bonded stretcher prism: no interfaces, modulus = E to 1e-8");
   }
   check(relative(masonry::brickwork::lourenco_rots_stiffness(10e9, 2e9, 0.01),

@@ -86,7 +86,7 @@ namespace
       << "\nset Deletion fade opening = " << w << "\n";
     const std::string   name = "cube_" + std::to_string(n);
     const masonry::Json s    = run(name, cube(n, t.str()));
-    check(s.at("status").as_string() == "completed",
+    check(s.at("status").get<std::string>() == "completed",
           name + ": completed to the last amplitude");
     // columns: 2 strain, 4 stress (compression positive), 10 deleted
     const auto rows = curve(name);
@@ -136,7 +136,7 @@ namespace
          "set Deletion strain = "
       << e_s << "\nset Deletion crushing length = " << w_c << "\n";
     const masonry::Json s = run("crushing", cube(1, t.str()));
-    check(s.at("status").as_string() == "completed",
+    check(s.at("status").get<std::string>() == "completed",
           "crushing: completed to the last amplitude");
     const auto rows = curve("crushing");
     double     f = 1, eps_s = -1, error = 0, second_peak = -1;
@@ -190,7 +190,7 @@ namespace
          "set Deletion strain = "
       << e_d << "\nset Deletion stress = " << s_d << "\n";
     const masonry::Json s = run("stress", cube(1, t.str()));
-    check(s.at("status").as_string() == "completed",
+    check(s.at("status").get<std::string>() == "completed",
           "stress: completed to the last amplitude");
     const auto   rows    = curve("stress");
     bool         deleted = false, kept = false, count = true;

@@ -117,25 +117,25 @@ main(int argc, char **argv)
           "failure.png written, a PNG of 640 x 360 pixels");
     const auto open = open_faces_in_vtu("opened");
     auto      &s    = summary["failure_plot"];
-    check(!open.empty() && s["open_joints"].as_number() == open.size() &&
-            s["open_joints_splitting"].as_number() == open.size(),
+    check(!open.empty() && s["open_joints"].get<double>() == open.size() &&
+            s["open_joints_splitting"].get<double>() == open.size(),
           "nu = -0.25: open joints drawn = faces of the last "
           "interfaces VTU with normal_opening > 1e-7 m (> 0), all "
           "splitting faces");
     std::ifstream     in("results/opened/failure.json");
     std::stringstream text;
     text << in.rdbuf();
-    const auto data = masonry::Json::parse(text.str());
+    const auto data = masonry::parse_json(text.str());
     check(data.at("joints").size() == open.size() &&
             data.at("cells").size() == 40 * 8,
           "failure.json: the open faces and the 320 cells");
-    check(s["displacement_magnification"].as_number() > 0,
+    check(s["displacement_magnification"].get<double>() > 0,
           "automatic displacement magnification stated");
   }
   {
     auto summary = run("closed", unit(0.15, true));
     check(open_faces_in_vtu("closed").empty() &&
-            summary["failure_plot"]["open_joints"].as_number() == 0 &&
+            summary["failure_plot"]["open_joints"].get<double>() == 0 &&
             std::filesystem::exists("results/closed/failure.png"),
           "nu = 0.15: no open joint in the VTU, none drawn");
   }

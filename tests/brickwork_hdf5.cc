@@ -36,7 +36,7 @@ main(int argc, char **argv)
         MPI_COMM_WORLD);
   if (rank != 0)
     return 0;
-  check(s.at("status").as_string() == "completed", "the run completes");
+  check(s.at("status").get<std::string>() == "completed", "the run completes");
 
   std::ifstream     in("results/hdf5/solution.xdmf");
   std::stringstream text;

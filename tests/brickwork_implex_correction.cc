@@ -121,45 +121,45 @@ main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const masonry::Json                      a = cube("accept", "accept");
-  check(a.at("status").as_string() == "completed", "accept: completed");
+  check(a.at("status").get<std::string>() == "completed", "accept: completed");
   const double accepted = off_envelope("accept");
   std::cout << "accept: largest distance from the envelope / (tol E0 e) "
             << (accepted > 1 ? "above" : "NOT above") << " 1\n";
-  check(accepted > 1 && a.at("implex_steps_over_tolerance").as_number() > 0,
+  check(accepted > 1 && a.at("implex_steps_over_tolerance").get<double>() > 0,
         "accept: some step at the floor is off the envelope by more than "
         "the tolerance allows");
 
   const masonry::Json c = cube("iterate", "iterate");
-  check(c.at("status").as_string() == "completed", "iterate: completed");
+  check(c.at("status").get<std::string>() == "completed", "iterate: completed");
   check(off_envelope("iterate") <= 1 + 1e-9,
         "iterate: every step within tol E0 e of the closed-form envelope");
-  check(c.at("implex_steps_uncorrected").as_number() == 0 &&
-          c.at("implex_steps_over_tolerance").as_number() == 0,
+  check(c.at("implex_steps_uncorrected").get<double>() == 0 &&
+          c.at("implex_steps_over_tolerance").get<double>() == 0,
         "iterate: no step left over the tolerance");
   const std::vector<int> steps = corrected_steps("iterate");
   const double           exact = off_at("iterate", steps);
   std::cout << "iterate: " << (steps.size() >= 2 ? "two or more" : "fewer")
             << " steps solved again\n";
   check(steps.size() >= 2 &&
-          c.at("implex_steps_corrected").as_number() == steps.size(),
+          c.at("implex_steps_corrected").get<double>() == steps.size(),
         "iterate: the steps over the tolerance were solved again");
   check(exact < 1e-6,
         "iterate: the steps solved again lie on the envelope (1e-6 of "
         "f_t)");
 
   const masonry::Json f = cube("floor", "iterate", 0.01);
-  check(f.at("implex_steps_redone").as_number() > 0,
+  check(f.at("implex_steps_redone").get<double>() > 0,
         "iterate, floor 0.01: steps over the tolerance are redone smaller");
   const masonry::Json any = cube("any", "iterate at any step", 0.01);
-  check(any.at("status").as_string() == "completed", "any step: completed");
-  check(any.at("implex_steps_redone").as_number() == 0 &&
-          any.at("steps").as_number() == 24,
+  check(any.at("status").get<std::string>() == "completed", "any step: completed");
+  check(any.at("implex_steps_redone").get<double>() == 0 &&
+          any.at("steps").get<double>() == 24,
         "any step: no step redone, the 24 nominal steps");
   check(off_envelope("any") <= 1 + 1e-9,
         "any step: every step within tol E0 e of the closed-form envelope");
   const std::vector<int> fixed = corrected_steps("any");
   check(fixed.size() >= 2 &&
-          any.at("implex_steps_corrected").as_number() == fixed.size() &&
+          any.at("implex_steps_corrected").get<double>() == fixed.size() &&
           off_at("any", fixed) < 1e-6,
         "any step: the steps over the tolerance were corrected at their own "
         "size and lie on the envelope (1e-6 of f_t)");

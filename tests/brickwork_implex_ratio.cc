@@ -90,7 +90,7 @@ namespace
   to_zero()
   {
     const masonry::Json s = run("zero", wall("0"));
-    check(s.at("status").as_string() == "completed",
+    check(s.at("status").get<std::string>() == "completed",
           "unloading to zero force: completed to the last amplitude");
     const auto rows   = curve("zero");
     double     growth = 0;
@@ -129,7 +129,7 @@ namespace
   {
     const double        s_u = 0.1e6;
     const masonry::Json s   = run("holding", wall("0.1e6"));
-    check(s.at("status").as_string() == "completed",
+    check(s.at("status").get<std::string>() == "completed",
           "unloading to 0.1 MPa: completed to the last amplitude");
     const auto   rows  = curve("holding");
     unsigned int legs  = 0;

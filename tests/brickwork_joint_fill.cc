@@ -64,26 +64,26 @@ namespace
       {
         auto s = run("double", wall("english", 7, h, c, true));
         std::cout << std::setprecision(6) << "double wall, fills " << h << ", "
-                  << c << ": head joints " << s["head_joint_area"].as_number()
+                  << c << ": head joints " << s["head_joint_area"].get<double>()
                   << " m^2 (hand " << head_double << "), collar " << collar
                   << " m^2\n";
-        check(relative(s["head_joint_area"].as_number(), head_double) < 1e-9 &&
-                relative(s["collar_joint_area"].as_number(), collar) < 1e-9,
+        check(relative(s["head_joint_area"].get<double>(), head_double) < 1e-9 &&
+                relative(s["collar_joint_area"].get<double>(), collar) < 1e-9,
               "double wall: head and collar joint areas as counted by hand");
-        check(relative(s["head_void_area"].as_number(), (1 - h) * head_double) <
+        check(relative(s["head_void_area"].get<double>(), (1 - h) * head_double) <
                   1e-9 &&
-                relative(s["collar_void_area"].as_number(), (1 - c) * collar) <
+                relative(s["collar_void_area"].get<double>(), (1 - c) * collar) <
                   1e-9,
               "double wall: voids = (1 - fill) x joint area");
-        check((s["n_collar_interface_faces"].as_number() == 0) == (c == 0),
+        check((s["n_collar_interface_faces"].get<double>() == 0) == (c == 0),
               "double wall: collar bond interfaces exist unless the collar "
               "joint is empty");
       }
     auto s = run("single", wall("stretcher", 7, 0.5, 1, true));
-    check(relative(s["head_joint_area"].as_number(), head_single) < 1e-9 &&
-            relative(s["head_void_area"].as_number(), 0.5 * head_single) <
+    check(relative(s["head_joint_area"].get<double>(), head_single) < 1e-9 &&
+            relative(s["head_void_area"].get<double>(), 0.5 * head_single) <
               1e-9 &&
-            s["collar_joint_area"].as_number() == 0,
+            s["collar_joint_area"].get<double>() == 0,
           "single leaf: head joint area as counted by hand, half void, no "
           "collar joint");
   }
@@ -111,7 +111,7 @@ namespace
         const auto &c = cases[i];
         auto s = run("course", wall("english", 1, c.head, c.collar, true));
         const double expected = eps * (Eb * units + Em * c.mortar) / gross;
-        const double stress   = std::abs(s["final_stress"].as_number());
+        const double stress   = std::abs(s["final_stress"].get<double>());
         stresses[i]           = stress;
         std::cout << std::setprecision(6) << c.what << ": " << stress * 1e-6
                   << " MPa (hand " << expected * 1e-6 << ")\n";
@@ -124,7 +124,7 @@ namespace
     // from the units through the bond on its sides only, so less than a
     // full joint and more than none
     auto         s      = run("course", wall("english", 1, 1, 0.5, true));
-    const double stress = std::abs(s["final_stress"].as_number());
+    const double stress = std::abs(s["final_stress"].get<double>());
     std::cout << "collar joint half filled: " << stress * 1e-6 << " MPa\n";
     check(stress < stresses[0] && stress > stresses[1],
           "one course: a half-filled collar joint carries less than a full "

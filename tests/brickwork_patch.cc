@@ -69,10 +69,10 @@ main(int argc, char **argv)
         run(c.name,
             prm(wallette(c.wallette),
                 "subsection Bond\n" + c.bond + "end\n" + material.str()));
-      check(relative(s.at("initial_modulus").as_number(), expected) < 1e-8 &&
-              relative(s.at("initial_modulus_gauge").as_number(), expected) <
+      check(relative(s.at("initial_modulus").get<double>(), expected) < 1e-8 &&
+              relative(s.at("initial_modulus_gauge").get<double>(), expected) <
                 1e-8 &&
-              relative(s.at("final_stress").as_number(), expected * strain) <
+              relative(s.at("final_stress").get<double>(), expected * strain) <
                 1e-8,
             c.name + ": distorted bricks, modulus (height and gauge) and final "
                      "stress = series formula to 1e-8");
@@ -87,8 +87,8 @@ main(int argc, char **argv)
                       "set Elements along the height = 3\n"
                       "set Joints = bonded\nset Write CalculiX input = true\n"),
           "subsection Bond\nset Pattern = stretcher\nend\n" + material.str()));
-    check(relative(s.at("initial_modulus").as_number(), E) < 1e-8 &&
-            relative(s.at("final_stress").as_number(), E * strain) < 1e-8,
+    check(relative(s.at("initial_modulus").get<double>(), E) < 1e-8 &&
+            relative(s.at("final_stress").get<double>(), E * strain) < 1e-8,
           name + ": modulus and final stress = E to 1e-8");
 
     // the mesh spacing of the parameters: 225/4 x 112.5/3 x 75/3 mm

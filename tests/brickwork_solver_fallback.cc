@@ -45,11 +45,11 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const masonry::Json gmres  = run("gmres", wallette("gmres amg"));
   const masonry::Json direct = run("direct", wallette("direct"));
-  check(direct.at("status").as_string() == "completed", "direct: completed");
-  check(gmres.at("status").as_string() == "completed", "gmres amg: completed");
-  check(gmres.at("direct_solver_fallbacks").as_number() > 0,
+  check(direct.at("status").get<std::string>() == "completed", "direct: completed");
+  check(gmres.at("status").get<std::string>() == "completed", "gmres amg: completed");
+  check(gmres.at("direct_solver_fallbacks").get<double>() > 0,
         "gmres amg: some solves fell back to MUMPS");
-  check(direct.at("deleted_cells").as_number() > 0,
+  check(direct.at("deleted_cells").get<double>() > 0,
         "direct: cells were deleted");
   // The two runs take the same steps until one of them cuts a step back, up
   // to what GMRES's tolerance (1e-10) lets through: the damage errors that
@@ -71,8 +71,8 @@ main(int argc, char **argv)
   // zeros left out of the sparsity changed MUMPS's pivot order, and the
   // direct run then stalled in step 256, two steps before the fallback).
   const auto   a = curve("gmres"), b = curve("direct");
-  const double peak    = direct.at("peak_stress").as_number();
-  const double nominal = 0.008 * direct.at("height").as_number() / 40;
+  const double peak    = direct.at("peak_stress").get<double>();
+  const double nominal = 0.008 * direct.at("height").get<double>() / 40;
   unsigned int common  = 0;
   double       diff    = 0;
   for (; common < std::min(a.size(), b.size()) &&
@@ -81,8 +81,8 @@ main(int argc, char **argv)
          a[common][10] == b[common][10];
        ++common)
     diff = std::max(diff, std::abs(a[common][4] - b[common][4]) / peak);
-  const bool cut_back = gmres.at("cut_backs").as_number() > 0 ||
-                        direct.at("cut_backs").as_number() > 0;
+  const bool cut_back = gmres.at("cut_backs").get<double>() > 0 ||
+                        direct.at("cut_backs").get<double>() > 0;
   const bool whole = common == a.size() && common == b.size();
   const int  fallback =
     first_step_after("results/gmres/log.txt", "MUMPS solves from here on");
@@ -104,7 +104,7 @@ main(int argc, char **argv)
 
   // the IMPL-EX step floor (columns: 1 displacement, 8 cycle, 9 unloading);
   // a cut-back halves a step below it
-  const double floor = 0.01 * 0.008 * direct.at("height").as_number() / 40;
+  const double floor = 0.01 * 0.008 * direct.at("height").get<double>() / 40;
   unsigned int below = 0, at_floor = 0;
   for (unsigned int j = 2; j + 1 < b.size(); ++j)
     if (b[j - 1][9] == 0 && b[j][9] == 0 && b[j + 1][9] == 0 &&
@@ -117,18 +117,18 @@ main(int argc, char **argv)
         else if (step < 1.01 * floor)
           ++at_floor;
       }
-  check(below <= direct.at("cut_backs").as_number(),
+  check(below <= direct.at("cut_backs").get<double>(),
         "IMPL-EX: no loading step below the minimum step (0.01 x nominal) "
         "but a cut-back's");
   check(at_floor > 0 &&
-          direct.at("implex_steps_over_tolerance").as_number() > 0,
+          direct.at("implex_steps_over_tolerance").get<double>() > 0,
         "IMPL-EX: some steps are held at the minimum step");
   unsigned int small = 0;
   for (unsigned int j = 1; j < b.size(); ++j)
     if (std::abs(b[j][1] - b[j - 1][1]) <= floor * (1 + 1e-6))
       ++small;
-  check(direct.at("implex_steps_redone").as_number() > 0 &&
-          direct.at("implex_steps_over_tolerance").as_number() <= small,
+  check(direct.at("implex_steps_redone").get<double>() > 0 &&
+          direct.at("implex_steps_over_tolerance").get<double>() <= small,
         "IMPL-EX: steps over the damage tolerance are redone unless at the "
         "minimum step");
 }

@@ -158,7 +158,7 @@ main(int argc, char **argv)
         std::pair{"predictor", &predictor},
         std::pair{"reuse", &reuse},
         std::pair{"threads", &threads}})
-    check(s->at("status").as_string() == "completed",
+    check(s->at("status").get<std::string>() == "completed",
           std::string(name) + ": completed");
 
   check(!text("before", "curve.csv").empty() &&
@@ -172,7 +172,7 @@ main(int argc, char **argv)
         "nonlocal length 0.05 m: a different curve, and two assembly threads "
         "give it byte for byte");
 
-  const double peak = before.at("peak_stress").as_number();
+  const double peak = before.at("peak_stress").get<double>();
   const auto   a = cycle_peaks("before"), b = cycle_peaks("predictor"),
              c = cycle_peaks("reuse"), d = cycle_peaks("no_chord");
   // the cycle of the peak (the second) and those before it
@@ -186,10 +186,10 @@ main(int argc, char **argv)
         "chord corrections: the peak of the cycle of the collapse within 2 % "
         "of the peak");
   const auto per_step = [](const masonry::Json &s, const std::string &key) {
-    return s.at(key).as_number() / s.at("steps").as_number();
+    return s.at(key).get<double>() / s.at("steps").get<double>();
   };
-  check(before.at("chord_solves").as_number() > 0 &&
-          no_chord.at("chord_solves").as_number() == 0 &&
+  check(before.at("chord_solves").get<double>() > 0 &&
+          no_chord.at("chord_solves").get<double>() == 0 &&
           per_step(before, "factorisations") <
             0.85 * per_step(no_chord, "factorisations"),
         "chord corrections: at least 15 % fewer factorisations per step");
@@ -212,24 +212,24 @@ main(int argc, char **argv)
   check(collapsed,
         "every run: the third cycle's peak below 0.5 of the peak, the "
         "fourth's below 0.1 (collapsed in the third cycle)");
-  check(predictor.at("newton_iterations").as_number() <
-          0.9 * no_chord.at("newton_iterations").as_number() *
-            predictor.at("steps").as_number() /
-            no_chord.at("steps").as_number(),
+  check(predictor.at("newton_iterations").get<double>() <
+          0.9 * no_chord.at("newton_iterations").get<double>() *
+            predictor.at("steps").get<double>() /
+            no_chord.at("steps").get<double>(),
         "extrapolated predictor: at least 10 % fewer Newton iterations per "
         "step");
-  check(before.at("factorisations").as_number() +
-              before.at("factorisations_reused").as_number() +
-              before.at("chord_solves").as_number() ==
-            before.at("linear_solves").as_number() &&
-          reuse.at("reuse_gmres_solves").as_number() > 0 &&
-          reuse.at("factorisations").as_number() +
-              reuse.at("reuse_gmres_solves").as_number() +
-              reuse.at("factorisations_reused").as_number() +
-              reuse.at("chord_solves").as_number() ==
-            reuse.at("linear_solves").as_number() &&
-          reuse.at("factorisations").as_number() <
-            0.5 * reuse.at("linear_solves").as_number(),
+  check(before.at("factorisations").get<double>() +
+              before.at("factorisations_reused").get<double>() +
+              before.at("chord_solves").get<double>() ==
+            before.at("linear_solves").get<double>() &&
+          reuse.at("reuse_gmres_solves").get<double>() > 0 &&
+          reuse.at("factorisations").get<double>() +
+              reuse.at("reuse_gmres_solves").get<double>() +
+              reuse.at("factorisations_reused").get<double>() +
+              reuse.at("chord_solves").get<double>() ==
+            reuse.at("linear_solves").get<double>() &&
+          reuse.at("factorisations").get<double>() <
+            0.5 * reuse.at("linear_solves").get<double>(),
         "factorisation reuse: fewer than half the solves factorise, the rest "
         "are GMRES solves");
 }

@@ -55,8 +55,8 @@ main(int argc, char **argv)
     const double nu       = -0.25;
     auto         summary  = run("auxetic", unit(nu, 0.0005));
     const double expected = f_t * (1 - nu * nu) / (-nu * E);
-    check(summary["n_split_units"].as_number() == 1 &&
-            summary["n_splitting_interface_faces"].as_number() == 8,
+    check(summary["n_split_units"].get<double>() == 1 &&
+            summary["n_splitting_interface_faces"].get<double>() == 8,
           "one unit split: 8 face pairs (1 across the width x 8 up the "
           "height)");
     const double opened = opening_strain("auxetic");
@@ -64,9 +64,9 @@ main(int argc, char **argv)
           "nu = -0.25: the splitting interface opens at strain f_t (1 - "
           "nu^2) / (-nu E) = 3.75e-4 (1 %)");
     auto &d = summary["derived_values"]["splitting_interfaces"];
-    check(relative(d["cohesion"].as_number(), 0.5 * std::sqrt(f_c * f_t)) <
+    check(relative(d["cohesion"].get<double>(), 0.5 * std::sqrt(f_c * f_t)) <
               1e-12 &&
-            relative(d["friction"].as_number(),
+            relative(d["friction"].get<double>(),
                      (f_c - f_t) / (2 * std::sqrt(f_c * f_t))) < 1e-12,
           "derived cohesion and friction: Mohr-Coulomb through f_c and f_t");
   }

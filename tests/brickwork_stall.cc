@@ -120,7 +120,7 @@ namespace
                         "set Output directory = results/" + name + "\n" + text);
     const testing::Result r = testing::run({name + ".prm"});
     return {r,
-            masonry::Json::parse(
+            masonry::parse_json(
               testing::read_file("results/" + name + "/summary.json"))};
   }
 
@@ -136,9 +136,9 @@ namespace
     check(r.exit_code == 1 && testing::n_lines(r.err) == 1 &&
             r.err.rfind("masonry: error: ", 0) == 0,
           name + ": exit code 1, one error line");
-    check(summary.at("status").as_string() == "failed" &&
-            !summary.at("complete").as_bool() &&
-            summary.at("analysis_status").as_string() == analysis,
+    check(summary.at("status").get<std::string>() == "failed" &&
+            !summary.at("complete").get<bool>() &&
+            summary.at("analysis_status").get<std::string>() == analysis,
           name +
             ": summary.json status failed, complete false, analysis "
             "status " +
@@ -146,7 +146,7 @@ namespace
     bool named = summary.contains("message");
     for (const auto &w : words)
       named = named &&
-              summary.at("message").as_string().find(w) != std::string::npos &&
+              summary.at("message").get<std::string>().find(w) != std::string::npos &&
               r.err.find(w) != std::string::npos;
     std::string list;
     for (const auto &w : words)
@@ -157,7 +157,7 @@ namespace
       for (const double v : row)
         finite = finite && std::isfinite(v);
     check(finite && brickwork_tests::curve(name).size() ==
-                      summary.at("steps").as_number() + 1,
+                      summary.at("steps").get<double>() + 1,
           name + ": curve.csv holds every converged step, all finite");
   }
 } // namespace
@@ -197,7 +197,7 @@ main(int argc, char **argv)
                 {"no progress", "Maximum Newton iterations"});
   const auto   c = curve("stall");
   const double nominal =
-                 target * stall.second.at("height").as_number() / n_steps,
+                 target * stall.second.at("height").get<double>() / n_steps,
                floor = 1e-3 * nominal;
   bool below         = c.size() > 52;
   for (unsigned int j = c.size() - 50; below && j < c.size(); ++j)

@@ -61,16 +61,16 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const masonry::Json                      same = run("same", wallette("0"));
   const masonry::Json                      own  = run("own", wallette("0.5"));
-  check(same.at("status").as_string() == "completed" &&
-          own.at("status").as_string() == "completed",
+  check(same.at("status").get<std::string>() == "completed" &&
+          own.at("status").get<std::string>() == "completed",
         "both runs completed");
-  const double       half = 0.5 * 0.008 * own.at("height").as_number() / 40;
+  const double       half = 0.5 * 0.008 * own.at("height").get<double>() / 40;
   const unsigned int a    = unloading_steps_below(curve("same"), half);
   const unsigned int b    = unloading_steps_below(curve("own"), half);
   check(a > 0,
         "(a) with the loading floor on every leg some unloading steps are "
         "smaller than half the nominal step");
-  check(b <= own.at("cut_backs").as_number(),
+  check(b <= own.at("cut_backs").get<double>(),
         "(b) with `IMPL-EX minimum step when unloading' = 0.5 none is, but "
         "those aimed at the unloading stress and a cut-back's");
 
@@ -96,12 +96,12 @@ main(int argc, char **argv)
   const masonry::Json stopped =
     run("resumed",
         wallette("0.5", "set Maximum steps = " + std::to_string(stop) + "\n"));
-  check(stopped.at("status").as_string() == "interrupted",
+  check(stopped.at("status").get<std::string>() == "interrupted",
         "(c) the first part stops as interrupted");
   const masonry::Json resumed =
     run("resumed", wallette("0.5", "set Resume = true\n"));
   const double diff = curve_difference(rows, curve("resumed"));
-  check(resumed.at("status").as_string() == "completed" && diff < 1e-12,
+  check(resumed.at("status").get<std::string>() == "completed" && diff < 1e-12,
         "(c) stopped there and resumed, the run reproduces the "
         "uninterrupted curve (1e-12)");
 }

@@ -44,17 +44,17 @@ main(int argc, char **argv)
   std::cout << "--print-parameters=json: exit code " << json.exit_code << "\n";
   try
     {
-      const masonry::Json j = masonry::Json::parse(json.out);
+      const masonry::Json j = masonry::parse_json(json.out);
       std::cout << "  parses as JSON: yes\n"
                 << "  Analysis: value '"
-                << j.at("Analysis").at("value").as_string()
+                << j.at("Analysis").at("value").get<std::string>()
                 << "', pattern description '"
-                << j.at("Analysis").at("pattern_description").as_string()
+                << j.at("Analysis").at("pattern_description").get<std::string>()
                 << "'\n"
                 << "  Test/Length: default '"
-                << j.at("Test").at("Length").at("default_value").as_string()
+                << j.at("Test").at("Length").at("default_value").get<std::string>()
                 << "', documentation '"
-                << j.at("Test").at("Length").at("documentation").as_string()
+                << j.at("Test").at("Length").at("documentation").get<std::string>()
                 << "'\n"
                 << "  Output directory declared: "
                 << (j.contains("Output directory") ? "yes" : "no") << "\n";

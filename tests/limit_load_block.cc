@@ -67,7 +67,7 @@ namespace
          const std::string &what)
   {
     const masonry::Json s   = run(name, prm);
-    const double        got = s.at("load_multiplier").as_number();
+    const double        got = s.at("load_multiplier").get<double>();
     const double        err = relative(got, lambda);
     std::cout << what << ": λ = " << std::setprecision(10) << lambda
               << " (theory)\n";
@@ -115,11 +115,11 @@ main(int argc, char **argv)
   {
     const masonry::Json r =
       run("reaction", block_prm(mohr_coulomb(0.1, 1000), "0; 1; 0"));
-    const double lambda = r.at("load_multiplier").as_number();
+    const double lambda = r.at("load_multiplier").get<double>();
     const auto  &base   = r.at("support_reactions").at("base");
-    const double err    = std::max({std::abs(base.at(0).as_number()) / W,
-                                    relative(base.at(1).as_number(), -lambda * W),
-                                    relative(base.at(2).as_number(), W)});
+    const double err    = std::max({std::abs(base.at(0).get<double>()) / W,
+                                    relative(base.at(1).get<double>(), -lambda * W),
+                                    relative(base.at(2).get<double>(), W)});
     check(err < 1e-8, "support reaction (0, −λW, W) from the LP dual to 1e-8");
   }
 
@@ -127,13 +127,13 @@ main(int argc, char **argv)
   {
     const masonry::Json free =
       run("free", block_prm(mohr_coulomb(0.1, 0), "0; 1; 0", "top"));
-    check(free.at("status").as_string() == "mechanism",
+    check(free.at("status").get<std::string>() == "mechanism",
           "block hanging from nothing (support on top, no tension): "
           "mechanism");
     const masonry::Json strong =
       run("strong",
           block_prm("  set Model = no tension no sliding\n", "0; 0; -1"));
-    check(strong.at("status").as_string() == "no_collapse",
+    check(strong.at("status").get<std::string>() == "no_collapse",
           "vertical load on a no-tension base without cap: no_collapse");
   }
 }

@@ -48,20 +48,20 @@ namespace
   {
     const masonry::Json automatic =
       run(file + "_automatic", prm + algorithm("automatic"));
-    const double best = automatic.at(key).as_number();
-    bool         ok   = automatic.at("status").as_string() == "optimal";
+    const double best = automatic.at(key).get<double>();
+    bool         ok   = automatic.at("status").get<std::string>() == "optimal";
     for (const std::string &a : algorithms)
       {
         const masonry::Json s =
           run(file + "_" + a.substr(0, a.find(' ')), prm + algorithm(a));
-        if (s.at("status").as_string() != "optimal")
+        if (s.at("status").get<std::string>() != "optimal")
           {
             ok = false;
-            std::cout << "  " << a << ": " << s.at("status").as_string()
+            std::cout << "  " << a << ": " << s.at("status").get<std::string>()
                       << "\n";
             continue;
           }
-        const double v = s.at(key).as_number();
+        const double v = s.at(key).get<double>();
         const double worse =
           (maximise ? v - best : best - v) / std::max(std::abs(v), 1e-300);
         if (worse > 1e-8)

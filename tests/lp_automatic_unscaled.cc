@@ -42,10 +42,10 @@ main(int argc, char **argv)
     "subsection LP solver\n  subsection Clp\n    set Algorithm = automatic\n"
     "  end\nend\n";
   const masonry::Json s = run("corner", prm);
-  check(s.at("status").as_string() == "optimal", "corner settlement: optimal");
+  check(s.at("status").get<std::string>() == "optimal", "corner settlement: optimal");
   const double lp_objective =
-    s.at("objective").as_number() /
-    (s.at("total_weight").as_number() * s.at("max_settlement").as_number());
+    s.at("objective").get<double>() /
+    (s.at("total_weight").get<double>() * s.at("max_settlement").get<double>());
   const double highs = 0.04325802774496;
   check(relative(lp_objective, highs) < 1e-8,
         "LP optimum = HiGHS's 0.04325802774496 (1e-8)");

@@ -47,7 +47,7 @@ namespace
   bool
   kept_interior(const masonry::Json &s)
   {
-    return s.at("lp_message").as_string().find("no crossover") !=
+    return s.at("lp_message").get<std::string>().find("no crossover") !=
            std::string::npos;
   }
 
@@ -64,12 +64,13 @@ namespace
           run(f + "_always", prm + solver(a, "always"));
         const masonry::Json interior =
           run(f + "_never", prm + solver(a, "never"));
-        const bool optimal = vertex.at("status").as_string() == "optimal" &&
-                             interior.at("status").as_string() == "optimal";
+        const bool optimal =
+          vertex.at("status").get<std::string>() == "optimal" &&
+          interior.at("status").get<std::string>() == "optimal";
         check(optimal && kept_interior(interior) && !kept_interior(vertex),
               name + ", " + a + ": `never' keeps the interior point");
-        const double error = optimal ? relative(interior.at(key).as_number(),
-                                                vertex.at(key).as_number()) :
+        const double error = optimal ? relative(interior.at(key).get<double>(),
+                                                vertex.at(key).get<double>()) :
                                        1.;
         if (!(error <= 1e-8))
           std::cout << "  relative difference " << error << "\n";
@@ -98,7 +99,7 @@ main(int argc, char **argv)
   // `never' is the default (since 2026-11-29): a run without the entry
   // keeps the interior point
   const masonry::Json by_default = run("settlement_default", settlement);
-  check(by_default.at("status").as_string() == "optimal" &&
+  check(by_default.at("status").get<std::string>() == "optimal" &&
           kept_interior(by_default),
         "settlement, default settings: the interior point is kept");
 
@@ -107,7 +108,7 @@ main(int argc, char **argv)
       const masonry::Json thin = run("thin_" + c,
                                      arch_prm(5, 0.3, 16, "0; 0; 0") +
                                        cohesionless + solver("automatic", c));
-      check(thin.at("status").as_string() == "mechanism",
+      check(thin.at("status").get<std::string>() == "mechanism",
             "t/R = 0.06, cohesionless, Crossover = " + c + ": mechanism");
       const masonry::Json bonded =
         run("bonded_" + c,
@@ -115,7 +116,7 @@ main(int argc, char **argv)
               solver("automatic", c) +
               "subsection Settlement\n  set Check support motion = false\n"
               "end\n");
-      check(bonded.at("status").as_string() == "incompatible",
+      check(bonded.at("status").get<std::string>() == "incompatible",
             "two blocks, bonded supports, Crossover = " + c + ": incompatible");
     }
 }

@@ -49,7 +49,7 @@ namespace
   bool
   kept_interior(const masonry::Json &s)
   {
-    return s.at("lp_message").as_string().find("no crossover") !=
+    return s.at("lp_message").get<std::string>().find("no crossover") !=
            std::string::npos;
   }
 
@@ -78,15 +78,15 @@ namespace
     const masonry::Json never = run(name + "_never", prm + crossover("never"));
     const masonry::Json always =
       run(name + "_always", prm + crossover("always"));
-    const bool optimal = never.at("status").as_string() == "optimal" &&
-                         always.at("status").as_string() == "optimal";
+    const bool optimal = never.at("status").get<std::string>() == "optimal" &&
+                         always.at("status").get<std::string>() == "optimal";
     check(optimal && kept_interior(never) && !kept_interior(always),
           name + ": `never' keeps the interior point");
     check(optimal &&
-            never.at("n_cracks").as_number() ==
-              always.at("n_cracks").as_number() &&
-            never.at("n_hinges").as_number() ==
-              always.at("n_hinges").as_number(),
+            never.at("n_cracks").get<double>() ==
+              always.at("n_cracks").get<double>() &&
+            never.at("n_hinges").get<double>() ==
+              always.at("n_hinges").get<double>(),
           name + ": the same cracks and hinges as the vertex");
     return {never, always};
   }
@@ -101,11 +101,11 @@ main(int argc, char **argv)
       both("arch",
            arch_prm(5, 1, 200, "0; 0; -0.01") + "subsection Interface model\n" +
              no_tension + "end\n");
-    const double error = relative(never.at("objective").as_number(),
-                                  always.at("objective").as_number());
+    const double error = relative(never.at("objective").get<double>(),
+                                  always.at("objective").get<double>());
     if (!(error <= 1e-8))
       std::cout << "  relative difference " << error << "\n";
-    check(always.at("objective").as_number() > 0 && error <= 1e-8,
+    check(always.at("objective").get<double>() > 0 && error <= 1e-8,
           "arch: the same optimum as the vertex (1e-8)");
   }
   {
@@ -117,12 +117,12 @@ main(int argc, char **argv)
     const masonry::Json never = run("limit_never", limit + crossover("never"));
     const masonry::Json always =
       run("limit_always", limit + crossover("always"));
-    const bool optimal = never.at("status").as_string() == "optimal" &&
-                         always.at("status").as_string() == "optimal";
-    const double error = optimal ?
-                           relative(never.at("load_multiplier").as_number(),
-                                    always.at("load_multiplier").as_number()) :
-                           1.;
+    const bool optimal = never.at("status").get<std::string>() == "optimal" &&
+                         always.at("status").get<std::string>() == "optimal";
+    const double error =
+      optimal ? relative(never.at("load_multiplier").get<double>(),
+                         always.at("load_multiplier").get<double>()) :
+                1.;
     if (!(error <= 1e-12))
       std::cout << "  relative difference " << error << "\n";
     check(optimal && !kept_interior(never) && error <= 1e-12,
@@ -131,14 +131,14 @@ main(int argc, char **argv)
   {
     const auto [never, always] =
       both("bothwell", example("bothwell-vertical-settlement"));
-    const double scale = never.at("total_weight").as_number() *
-                         never.at("max_settlement").as_number();
-    const double difference = std::abs(never.at("objective").as_number() -
-                                       always.at("objective").as_number());
+    const double scale = never.at("total_weight").get<double>() *
+                         never.at("max_settlement").get<double>();
+    const double difference = std::abs(never.at("objective").get<double>() -
+                                       always.at("objective").get<double>());
     if (!(difference <= 1e-8 * scale))
       std::cout << "  difference " << difference << " J, W delta " << scale
                 << " J\n";
-    check(std::abs(always.at("objective").as_number()) <= 1e-8 * scale &&
+    check(std::abs(always.at("objective").get<double>()) <= 1e-8 * scale &&
             difference <= 1e-8 * scale,
           "bothwell: the optimum 0 of the vertex to 1e-8 W delta");
   }
@@ -149,7 +149,7 @@ main(int argc, char **argv)
             example("bothwell-horizontal-settlement") + crossover(c) +
               "subsection Settlement\n  set Check support motion = false\n"
               "end\n");
-      check(spreading.at("status").as_string() == "incompatible",
+      check(spreading.at("status").get<std::string>() == "incompatible",
             "bothwell, horizontal settlement, Crossover = " + c +
               ": incompatible");
     }

@@ -80,7 +80,7 @@ namespace
   std::string
   text(const masonry::Json &s, const std::string &key)
   {
-    return s.contains(key) ? s.at(key).as_string() : "";
+    return s.contains(key) ? s.at(key).get<std::string>() : "";
   }
 } // namespace
 
@@ -105,13 +105,13 @@ main(int argc, char **argv)
             arch_prm(3, 0.15, 8, "0.01; 0; 0", "unilateral", "glpk") + joints);
       const masonry::Json thick =
         run("thick-" + name, arch_prm(3, 0.5, 8, "0.01; 0; 0") + joints);
-      check(thin.at("status").as_string() == "mechanism" &&
-              glpk.at("status").as_string() == "mechanism",
+      check(thin.at("status").get<std::string>() == "mechanism" &&
+              glpk.at("status").get<std::string>() == "mechanism",
             name + ": t/R = 0.05 is a mechanism (Clp and GLPK)");
-      check(thick.at("status").as_string() == "optimal",
+      check(thick.at("status").get<std::string>() == "optimal",
             name + ": t/R = 0.17 stands");
       if (name == "mohr-coulomb")
-        check(thin.at("mechanism_blocks").as_number() > 0 &&
+        check(thin.at("mechanism_blocks").get<double>() > 0 &&
                 text(thin, "lp_message").find("ray") != std::string::npos,
               name + ": decided by the ray LP, whose mechanism moves blocks");
     }
@@ -126,12 +126,12 @@ main(int argc, char **argv)
     const masonry::Json glpk =
       run("axial-glpk",
           prm + "subsection LP solver\n  set Solver = glpk\nend\n");
-    check(glpk.at("status").as_string() == "incompatible",
+    check(glpk.at("status").get<std::string>() == "incompatible",
           "axial shift of a bonded springing: GLPK finds the LP infeasible");
-    check(clp.at("support_check").at("largest_misfit").as_number() < 1e-12 &&
-            clp.at("status").as_string() == "incompatible" &&
-            clp.at("incompatibility").at("kind").as_string() == "lp" &&
-            clp.at("incompatibility").at("total_misfit").as_number() > 0,
+    check(clp.at("support_check").at("largest_misfit").get<double>() < 1e-12 &&
+            clp.at("status").get<std::string>() == "incompatible" &&
+            clp.at("incompatibility").at("kind").get<std::string>() == "lp" &&
+            clp.at("incompatibility").at("total_misfit").get<double>() > 0,
           "the direct check passes it; the LP's phase 1 finds it "
           "incompatible and names a joint");
   }
@@ -163,9 +163,9 @@ main(int argc, char **argv)
             message.find("solved again") != std::string::npos,
           "GLPK's first optimum fails the check and is solved again");
     check(text(glpk, "lp_check") == "passed" &&
-            glpk.at("lp_max_violation").as_number() < 1e-6 &&
-            relative(glpk.at("lp_objective").as_number(),
-                     clp.at("lp_objective").as_number()) < 1e-7,
+            glpk.at("lp_max_violation").get<double>() < 1e-6 &&
+            relative(glpk.at("lp_objective").get<double>(),
+                     clp.at("lp_objective").get<double>()) < 1e-7,
           "the re-solved optimum passes, with Clp's optimum (1e-7)");
   }
 
@@ -178,7 +178,7 @@ main(int argc, char **argv)
     std::stringstream log;
     log << in.rdbuf();
     check(text(s, "lp_check") == "failed" &&
-            s.at("lp_max_violation").as_number() >= 1e-4 &&
+            s.at("lp_max_violation").get<double>() >= 1e-4 &&
             log.str().find(
               "Warning: the LP solver's optimum fails the check") !=
               std::string::npos,

@@ -36,12 +36,12 @@ namespace
       run(name + "_keep", with_rows(prm, section, "keep"));
     const masonry::Json lean =
       run(name + "_leave_out", with_rows(prm, section, "leave out"));
-    const bool optimal = full.at("status").as_string() == "optimal" &&
-                         lean.at("status").as_string() == "optimal";
-    const double a         = optimal ? full.at(key).as_number() : 0,
-                 b         = optimal ? lean.at(key).as_number() : 1;
-    const double rows_full = full.at("lp_rows").as_number(),
-                 rows_lean = lean.at("lp_rows").as_number();
+    const bool optimal = full.at("status").get<std::string>() == "optimal" &&
+                         lean.at("status").get<std::string>() == "optimal";
+    const double a         = optimal ? full.at(key).get<double>() : 0,
+                 b         = optimal ? lean.at(key).get<double>() : 1;
+    const double rows_full = full.at("lp_rows").get<double>(),
+                 rows_lean = lean.at("lp_rows").get<double>();
     check(optimal && std::abs(a - b) <= 1e-8 * std::max(std::abs(a), 1e-6),
           name + ": same " + key + " with and without the implied rows");
     check(rows_lean < rows_full, name + ": fewer LP rows");

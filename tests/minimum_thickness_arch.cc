@@ -96,12 +96,12 @@ main(int argc, char **argv)
   for (const unsigned int n : {4u, 8u, 16u, 32u, 64u})
     {
       const masonry::Json s = run("arch_" + std::to_string(n), prm(n, ntns));
-      if (s.at("status").as_string() != "optimal")
+      if (s.at("status").get<std::string>() != "optimal")
         {
           check(false, "status optimal");
           return 0;
         }
-      const double t_over_R = s.at("minimum_thickness").as_number() / R;
+      const double t_over_R = s.at("minimum_thickness").get<double>() / R;
       const double error    = relative(t_over_R, reference);
 
       // haunch hinge on the left half: the crack between 20° and 80° from
@@ -112,7 +112,7 @@ main(int argc, char **argv)
         {
           const auto  &p = cracks.at(i).at("position");
           const double a =
-            std::atan2(std::abs(p.at(0).as_number()), p.at(2).as_number()) *
+            std::atan2(std::abs(p.at(0).get<double>()), p.at(2).get<double>()) *
             180 / M_PI;
           if (a > 20 && a < 80)
             angle = a;
@@ -136,14 +136,14 @@ main(int argc, char **argv)
       // with γ R t = W / π (W = γ π R t, depth 1 m)
       const auto  &reactions = s.at("support_reactions");
       const double H =
-        std::abs(reactions.at("springing left").at(0).as_number());
-      const double W = reactions.at("springing left").at(2).as_number() +
-                       reactions.at("springing right").at(2).as_number();
+        std::abs(reactions.at("springing left").at(0).get<double>());
+      const double W = reactions.at("springing left").at(2).get<double>() +
+                       reactions.at("springing right").at(2).get<double>();
       ratio_last = H * M_PI / W;
 
       table << n << "," << std::setprecision(8) << t_over_R << "," << error
             << "," << angle << "," << size << "," << ratio_last << ","
-            << s.at("wall_seconds").as_number() << "\n";
+            << s.at("wall_seconds").get<double>() << "\n";
       // nested meshes: more joints, more mechanisms, t/R can only grow
       // (up to the LP tolerances: Clp's dual feasibility tolerance, 1e-7,
       // decides unboundedness near the threshold, which scatters t/R by
@@ -170,8 +170,8 @@ main(int argc, char **argv)
             "    set Friction coefficient = 10\n    set Cohesion = 0\n"
             "    set Tensile strength = 0\n    set Compressive strength = "
             "0\n  end\n"));
-  check(relative(b.at("minimum_thickness").as_number(),
-                 a.at("minimum_thickness").as_number()) < 1e-4,
+  check(relative(b.at("minimum_thickness").get<double>(),
+                 a.at("minimum_thickness").get<double>()) < 1e-4,
         "mohr coulomb (c = f_t = 0, tan φ = 10) equals no tension no "
         "sliding to 1e-4 (the LP tolerances decide unboundedness near the "
         "threshold)");

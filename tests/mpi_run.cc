@@ -39,9 +39,9 @@ main(int argc, char **argv)
                                                                      "no")
                 << "\n";
       const masonry::Json summary =
-        masonry::Json::parse(testing::read_file("results/summary.json"));
-      std::cout << "summary.json: status " << summary.at("status").as_string()
-                << ", n_mpi_ranks " << summary.at("n_mpi_ranks").as_number()
+        masonry::parse_json(testing::read_file("results/summary.json"));
+      std::cout << "summary.json: status " << summary.at("status").get<std::string>()
+                << ", n_mpi_ranks " << summary.at("n_mpi_ranks").get<double>()
                 << "\n";
     }
 

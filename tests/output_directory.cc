@@ -17,17 +17,17 @@ namespace
               << (testing::read_file("results/log.txt") == r.out ? "yes" : "no")
               << "\n";
     const masonry::Json summary =
-      masonry::Json::parse(testing::read_file("results/summary.json"));
+      masonry::parse_json(testing::read_file("results/summary.json"));
     std::cout << "summary.json: analysis = "
-              << summary.at("analysis").as_string()
-              << ", status = " << summary.at("status").as_string()
+              << summary.at("analysis").get<std::string>()
+              << ", status = " << summary.at("status").get<std::string>()
               << ", wall_seconds >= 0: "
-              << (summary.at("wall_seconds").as_number() >= 0 ? "yes" : "no")
-              << ", length = " << summary.at("length").as_number()
+              << (summary.at("wall_seconds").get<double>() >= 0 ? "yes" : "no")
+              << ", length = " << summary.at("length").get<double>()
               << "\n  files:";
     for (std::size_t i = 0; i < summary.at("files").size(); ++i)
       {
-        const std::string f = summary.at("files").at(i).as_string();
+        const std::string f = summary.at("files").at(i).get<std::string>();
         std::cout << " " << f
                   << (std::filesystem::exists("results/" + f) ? "" :
                                                                 "(missing!)");

@@ -23,7 +23,7 @@ namespace
     std::set<std::string> names;
     const masonry::Json  &list = summary.at("files");
     for (std::size_t i = 0; i < list.size(); ++i)
-      names.insert(list.at(i).as_string());
+      names.insert(list.at(i).get<std::string>());
     return names;
   }
 
@@ -91,13 +91,13 @@ main(int argc, char **argv)
     check(testing::read_file(std::string("results/subset/") + f) ==
             testing::read_file(std::string("results/default/") + f),
           std::string(f) + " identical to the default run's");
-  check(some.at("external_work").as_number() ==
-          all.at("external_work").as_number(),
+  check(some.at("external_work").get<double>() ==
+          all.at("external_work").get<double>(),
         "same external work");
 
   const masonry::Json none = vault_tests::run("none", with_list(""));
   std::cout << "empty list: " << joined(files(none)) << "\n";
-  check(files(none) == always && none.at("status").as_string() == "optimal",
+  check(files(none) == always && none.at("status").get<std::string>() == "optimal",
         "empty list: no result files, status optimal");
 
   testing::write_file("twice.prm",

@@ -19,11 +19,11 @@ main(int argc, char **argv)
             << testing::normalise(r.out) << "--- end of screen\n";
   testing::check_error(r);
   const masonry::Json summary =
-    masonry::Json::parse(testing::read_file("results/summary.json"));
-  std::cout << "summary.json: status = " << summary.at("status").as_string()
-            << "\n  error = " << summary.at("error").as_string()
+    masonry::parse_json(testing::read_file("results/summary.json"));
+  std::cout << "summary.json: status = " << summary.at("status").get<std::string>()
+            << "\n  error = " << summary.at("error").get<std::string>()
             << "\n  files:";
   for (std::size_t i = 0; i < summary.at("files").size(); ++i)
-    std::cout << " " << summary.at("files").at(i).as_string();
+    std::cout << " " << summary.at("files").at(i).get<std::string>();
   std::cout << "\n";
 }

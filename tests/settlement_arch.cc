@@ -26,7 +26,7 @@ main(int argc, char **argv)
   const double R = 5, t = 1;
   const double reference = run("arch_ref", arch_prm(R, t, 256, "0; 0; -0.01"))
                              .at("external_work")
-                             .as_number();
+                             .get<double>();
 
   double        previous = 1e300;
   bool          monotone = true, converged = true, three_hinges = true;
@@ -37,20 +37,20 @@ main(int argc, char **argv)
       const masonry::Json s =
         run("arch_" + std::to_string(n), arch_prm(R, t, n, "0; 0; -0.01"));
       const double error =
-        relative(s.at("external_work").as_number(), reference);
-      table << n << ", " << s.at("external_work").as_number() << ", " << error
+        relative(s.at("external_work").get<double>(), reference);
+      table << n << ", " << s.at("external_work").get<double>() << ", " << error
             << "\n";
       monotone     = monotone && error <= previous;
       converged    = converged && (n < 16 || error < 1e-2);
-      three_hinges = three_hinges && s.at("n_hinges").as_number() == 3;
+      three_hinges = three_hinges && s.at("n_hinges").get<double>() == 3;
       previous     = error;
       if (n == 16)
         {
           const masonry::Json g =
             run("arch_glpk",
                 arch_prm(R, t, n, "0; 0; -0.01", "unilateral", "glpk"));
-          check(relative(g.at("external_work").as_number(),
-                         s.at("external_work").as_number()) < 1e-8,
+          check(relative(g.at("external_work").get<double>(),
+                         s.at("external_work").get<double>()) < 1e-8,
                 "Clp and GLPK agree to 1e-8 (16 blocks per half)");
         }
     }
@@ -60,10 +60,10 @@ main(int argc, char **argv)
 
   const masonry::Json thin =
     run("arch_thin", arch_prm(R, 0.06 * R, 16, "0; 0; 0"));
-  check(thin.at("status").as_string() == "mechanism",
+  check(thin.at("status").get<std::string>() == "mechanism",
         "t/R = 0.06 without settlement: mechanism");
   const masonry::Json bonded =
     run("arch_bonded", arch_prm(R, t, 1, "0; 0; -0.01", "bonded"));
-  check(bonded.at("status").as_string() == "incompatible",
+  check(bonded.at("status").get<std::string>() == "incompatible",
         "two blocks, bonded supports, one settles: incompatible");
 }

@@ -17,7 +17,7 @@ main(int argc, char **argv)
   const double R = 3, t = 0.5, L = 4;
   const double arch = run("arch", arch_prm(R, t, 8, "0; 0; -0.01"))
                         .at("external_work")
-                        .as_number();
+                        .get<double>();
   std::ostringstream prm;
   prm << "set Analysis = settlement\n"
       << "subsection Geometry model\n  set Model name = barrel vault\n"
@@ -31,7 +31,7 @@ main(int argc, char **argv)
       << "  set Settling edges = springing right\n"
       << "  set Settlement = 0; 0; -0.01\n  set Write picture = false\nend\n";
   const masonry::Json barrel = run("barrel", prm.str());
-  check(barrel.at("status").as_string() == "optimal", "barrel vault: optimal");
-  check(relative(barrel.at("external_work").as_number() / L, arch) < 1e-8,
+  check(barrel.at("status").get<std::string>() == "optimal", "barrel vault: optimal");
+  check(relative(barrel.at("external_work").get<double>() / L, arch) < 1e-8,
         "barrel work per unit length = arch work per unit depth (1e-8)");
 }

@@ -43,7 +43,7 @@ namespace
                   << r.err;
         std::exit(1);
       }
-    return root ? masonry::Json::parse(
+    return root ? masonry::parse_json(
                     testing::read_file("results/" + name + "/summary.json")) :
                   masonry::Json();
   }
@@ -105,8 +105,8 @@ namespace
           const masonry::Json &reference)
   {
     Comparison c;
-    c.work = vault_tests::relative(s.at("external_work").as_number(),
-                                   reference.at("external_work").as_number());
+    c.work = vault_tests::relative(s.at("external_work").get<double>(),
+                                   reference.at("external_work").get<double>());
     // the crack list: same interfaces of the same type, in the same order,
     // and their openings and relative rotations
     const masonry::Json &a = s.at("cracks");
@@ -116,13 +116,13 @@ namespace
     for (unsigned int i = 0; c.same_crack_list && i < a.size(); ++i)
       {
         c.same_crack_list =
-          a.at(i).at("interface").as_number() ==
-            b.at(i).at("interface").as_number() &&
-          a.at(i).at("type").as_string() == b.at(i).at("type").as_string();
+          a.at(i).at("interface").get<double>() ==
+            b.at(i).at("interface").get<double>() &&
+          a.at(i).at("type").get<std::string>() == b.at(i).at("type").get<std::string>();
         for (const char *key : {"max_opening", "relative_rotation"})
           {
-            va.push_back(a.at(i).at(key).as_number());
-            vb.push_back(b.at(i).at(key).as_number());
+            va.push_back(a.at(i).at(key).get<double>());
+            vb.push_back(b.at(i).at(key).get<double>());
           }
       }
     c.cracks = c.same_crack_list ? difference(va, vb) : INFINITY;
@@ -169,14 +169,14 @@ main(int argc, char **argv)
                vault_tests::arch_prm(R, t, 16, "0; 0; -0.0101"),
                MPI_COMM_SELF);
 
-      std::cout << "ranks: " << parallel.at("n_mpi_ranks").as_number()
-                << " and " << serial.at("n_mpi_ranks").as_number() << "\n"
-                << "status: " << parallel.at("status").as_string() << " and "
-                << serial.at("status").as_string() << "\n"
+      std::cout << "ranks: " << parallel.at("n_mpi_ranks").get<double>()
+                << " and " << serial.at("n_mpi_ranks").get<double>() << "\n"
+                << "status: " << parallel.at("status").get<std::string>() << " and "
+                << serial.at("status").get<std::string>() << "\n"
                 << "cracks: " << parallel.at("cracks").size() << " ("
-                << parallel.at("n_hinges").as_number() << " hinges) and "
+                << parallel.at("n_hinges").get<double>() << " hinges) and "
                 << serial.at("cracks").size() << " ("
-                << serial.at("n_hinges").as_number() << " hinges)\n";
+                << serial.at("n_hinges").get<double>() << " hinges)\n";
 
       const Comparison c = compare("ranks_all", parallel, "rank_one", serial);
       std::cout << "same crack list (interfaces and types): "
@@ -187,10 +187,10 @@ main(int argc, char **argv)
                 << ", block motions " << (c.motions <= 1e-12 ? "yes" : "no")
                 << "\n";
       if (equal(c))
-        std::cout << "1 and " << parallel.at("n_mpi_ranks").as_number()
+        std::cout << "1 and " << parallel.at("n_mpi_ranks").get<double>()
                   << " ranks: equal\n";
       else
-        std::cout << "1 and " << parallel.at("n_mpi_ranks").as_number()
+        std::cout << "1 and " << parallel.at("n_mpi_ranks").get<double>()
                   << " ranks: DIFFERENT (external work " << c.work
                   << ", cracks " << c.cracks << ", block motions " << c.motions
                   << ")\n";
@@ -205,8 +205,8 @@ main(int argc, char **argv)
       // and, by the linearity of the rigid-block problem in the settlement,
       // its work is 1.01 times the reference
       std::cout << "its work is 1.01 times the reference (to 1e-9): "
-                << (std::abs(perturbed.at("external_work").as_number() /
-                               serial.at("external_work").as_number() -
+                << (std::abs(perturbed.at("external_work").get<double>() /
+                               serial.at("external_work").get<double>() -
                              1.01) < 1e-9 ?
                       "yes" :
                       "no")

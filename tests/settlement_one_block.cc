@@ -117,7 +117,7 @@ main(int argc, char **argv)
         vault_tests::run("one_block_q" + std::to_string(q),
                          prm("unilateral", "clp", q));
       const double error =
-        vault_tests::relative(s.at("total_weight").as_number(), W);
+        vault_tests::relative(s.at("total_weight").get<double>(), W);
       decreasing = decreasing && (error < previous || error < 1e-14);
       previous   = error;
     }
@@ -129,10 +129,10 @@ main(int argc, char **argv)
     {
       const masonry::Json s =
         vault_tests::run("one_block_" + solver, prm("unilateral", solver));
-      const double work = s.at("external_work").as_number();
-      vault_tests::check(s.at("status").as_string() == "optimal",
+      const double work = s.at("external_work").get<double>();
+      vault_tests::check(s.at("status").get<std::string>() == "optimal",
                          solver + ": status optimal");
-      vault_tests::check(s.at("n_blocks").as_number() == 1,
+      vault_tests::check(s.at("n_blocks").get<double>() == 1,
                          solver + ": one block");
       vault_tests::check(vault_tests::relative(work, expected) < 1e-9,
                          solver + ": external work = W delta (R - t/2)/(2R) "
@@ -140,7 +140,7 @@ main(int argc, char **argv)
 
       const masonry::Json b =
         vault_tests::run("one_block_bonded_" + solver, prm("bonded", solver));
-      vault_tests::check(b.at("status").as_string() == "incompatible",
+      vault_tests::check(b.at("status").get<std::string>() == "incompatible",
                          solver + ": bonded supports -> incompatible");
     }
 }

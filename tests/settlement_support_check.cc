@@ -138,19 +138,19 @@ namespace
       run(name, bonded_barrel("0.01*y/6; 0; -0.005", joints));
     const auto [largest, rms] = shear_misfit();
     const auto &x             = s.at("incompatibility");
-    const auto  block = static_cast<unsigned int>(x.at("block").as_number());
-    check(s.at("status").as_string() == "incompatible" &&
-            x.at("kind").as_string() == "support" &&
-            s.at("lp_solves").as_number() == 0,
+    const auto  block = static_cast<unsigned int>(x.at("block").get<double>());
+    check(s.at("status").get<std::string>() == "incompatible" &&
+            x.at("kind").get<std::string>() == "support" &&
+            s.at("lp_solves").get<double>() == 0,
           name + ": incompatible by the direct check, no LP solved");
-    check(x.at("support_edge").as_string() == "springing right" &&
-            x.at("centroid").at(0).as_number() > 0 &&
-            x.at("count").as_number() == 4,
+    check(x.at("support_edge").get<std::string>() == "springing right" &&
+            x.at("centroid").at(0).get<double>() > 0 &&
+            x.at("count").get<double>() == 4,
           name + ": the 4 blocks of the right springing, edge and block named");
-    check(relative(x.at("misfit").as_number(), largest) < 1e-9 &&
-            relative(x.at("rms_misfit").as_number(), rms) < 1e-9,
+    check(relative(x.at("misfit").get<double>(), largest) < 1e-9 &&
+            relative(x.at("rms_misfit").get<double>(), rms) < 1e-9,
           name + ": misfit and its RMS as by hand (1e-9)");
-    const std::string e = s.at("explanation").as_string();
+    const std::string e = s.at("explanation").get<std::string>();
     check(e.find("springing right") != std::string::npos &&
             e.find("block " + std::to_string(block)) != std::string::npos &&
             e.find(" m at (") != std::string::npos,
@@ -202,13 +202,14 @@ main(int argc, char **argv)
                         mohr_coulomb,
                         "  set Check support motion = false\n"));
     const auto &x = s.at("incompatibility");
-    check(s.at("status").as_string() == "incompatible" &&
-            x.at("kind").as_string() == "lp" &&
-            s.at("lp_message").as_string().find("phase 1") != std::string::npos,
+    check(s.at("status").get<std::string>() == "incompatible" &&
+            x.at("kind").get<std::string>() == "lp" &&
+            s.at("lp_message").get<std::string>().find("phase 1") !=
+              std::string::npos,
           "without the check: incompatible by the LP's phase 1");
     const double bound = 4 * shear_l1_misfit();
-    check(x.at("total_misfit").as_number() > 0 &&
-            x.at("total_misfit").as_number() <= bound * (1 + 1e-6),
+    check(x.at("total_misfit").get<double>() > 0 &&
+            x.at("total_misfit").get<double>() <= bound * (1 + 1e-6),
           "its least total misfit is positive and at most that of the "
           "least-squares fits");
   }
@@ -222,12 +223,12 @@ main(int argc, char **argv)
     const double largest =
       0.005 * std::max(std::abs(1 - a * q), std::abs(1 - b * q));
     const auto &x = s.at("incompatibility");
-    check(s.at("status").as_string() == "incompatible" &&
-            x.at("kind").as_string() == "support" &&
-            x.at("count").as_number() == 1 &&
-            s.at("support_check").at("supported_groups").as_number() == 1,
+    check(s.at("status").get<std::string>() == "incompatible" &&
+            x.at("kind").get<std::string>() == "support" &&
+            x.at("count").get<double>() == 1 &&
+            s.at("support_check").at("supported_groups").get<double>() == 1,
           "rigid joints: the vault is one group, which cannot follow");
-    check(relative(x.at("misfit").as_number(), largest) < 1e-9,
+    check(relative(x.at("misfit").get<double>(), largest) < 1e-9,
           "rigid joints: the misfit of one rigid motion as by hand (1e-9)");
     std::cout << "  misfit " << std::setprecision(6) << largest << " m\n";
   }
@@ -249,11 +250,11 @@ main(int argc, char **argv)
               "  set Settling edges = springing left, springing right\n",
               0.5));
       const double drop = -(-0.005 + 0.0005 * 3);
-      check(s.at("status").as_string() == "optimal" &&
-              s.at("support_check").at("largest_misfit").as_number() < 1e-12,
+      check(s.at("status").get<std::string>() == "optimal" &&
+              s.at("support_check").at("largest_misfit").get<double>() < 1e-12,
             name + ": a rigid motion of both springings is followed");
-      check(relative(s.at("objective").as_number(),
-                     s.at("total_weight").as_number() * drop) < 1e-7,
+      check(relative(s.at("objective").get<double>(),
+                     s.at("total_weight").get<double>() * drop) < 1e-7,
             name + ": work = weight x drop of the centroid (1e-7)");
     }
 
@@ -278,13 +279,14 @@ main(int argc, char **argv)
           run(stem + "-" + contact, text.str() + tail + end);
         const masonry::Json without =
           run(stem + "-" + contact + "-lp", text.str() + tail + off + end);
-        const std::string status = with.at("status").as_string();
+        const std::string status = with.at("status").get<std::string>();
         ++n;
-        if (status == without.at("status").as_string() &&
+        if (status == without.at("status").get<std::string>() &&
             (status != "optimal" ||
-             std::abs(with.at("objective").as_number() -
-                      without.at("objective").as_number()) <=
-               1e-8 * std::max(1., std::abs(with.at("objective").as_number()))))
+             std::abs(with.at("objective").get<double>() -
+                      without.at("objective").get<double>()) <=
+               1e-8 *
+                 std::max(1., std::abs(with.at("objective").get<double>()))))
           ++same;
       }
   check(n == 10 && same == n,

@@ -41,6 +41,11 @@ namespace testing
                         "false",
                         dealii::Patterns::Bool(),
                         "Throw an exception in run(), after writing files.");
+      prm.declare_entry("Fail on rank",
+                        "-1",
+                        dealii::Patterns::Integer(-1),
+                        "This rank alone throws an exception in run() while "
+                        "the others wait in a barrier (-1: none).");
     }
 
     void
@@ -53,6 +58,7 @@ namespace testing
                                           prm.get("Length")));
       n_files         = prm.get_integer("Number of files");
       fail_during_run = prm.get_bool("Fail during run");
+      fail_on_rank    = prm.get_integer("Fail on rank");
     }
 
     void
@@ -70,6 +76,14 @@ namespace testing
         }
       AssertThrow(!fail_during_run,
                   dealii::ExcMessage("the test analysis fails on purpose"));
+      if (fail_on_rank >= 0)
+        {
+          AssertThrow(int(dealii::Utilities::MPI::this_mpi_process(
+                        context.mpi_communicator)) != fail_on_rank,
+                      dealii::ExcMessage("a non-finite value in this rank's "
+                                         "cells (on purpose)"));
+          MPI_Barrier(context.mpi_communicator);
+        }
       context.summary["length"] = length;
     }
 
@@ -77,6 +91,7 @@ namespace testing
     double       length          = 1;
     unsigned int n_files         = 2;
     bool         fail_during_run = false;
+    int          fail_on_rank    = -1;
   };
 } // namespace testing
 

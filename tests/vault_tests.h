@@ -52,7 +52,7 @@ namespace vault_tests
     std::ifstream     in("results/" + name + "/summary.json");
     std::stringstream text;
     text << in.rdbuf();
-    return masonry::Json::parse(text.str());
+    return masonry::parse_json(text.str());
   }
 
   /** Print "OK what" or "FAILED what" for a check (rank 0 of the world

@@ -28,72 +28,34 @@ With --section X it also draws the y-z section at x = X (m) of the vertical
 and lateral stress (cells whose x-range contains X) to FILE.
 The collar planes follow from the wallette's `Brick width` w and `Joint
 thickness` h_m: y in [k (w + h_m) - h_m, k (w + h_m)], k = 1 .. n - 1.
-Needs /usr/bin/python3 with numpy (and matplotlib for --png).
+Needs /usr/bin/python3 with numpy and meshio (and matplotlib for --png).
 """
 import argparse
-import base64
 import csv
 import json
 import os
 import re
-import struct
+import sys
 import xml.etree.ElementTree as ET
-import zlib
 
 import numpy as np
 
-TYPES = {
-    "Float32": np.float32,
-    "Float64": np.float64,
-    "Int32": np.int32,
-    "Int64": np.int64,
-    "UInt8": np.uint8,
-    "UInt32": np.uint32,
-    "UInt64": np.uint64,
-}
-
-
-def decode_binary(text, dtype):
-    """A zlib-compressed, base64-encoded VTK XML data array (the UInt32
-    header: number of blocks, block size, last block size, compressed sizes;
-    header and data encoded separately, as deal.II writes them)."""
-    text = text.strip()
-    n_blocks = struct.unpack("<I", base64.b64decode(text[:8])[:4])[0]
-    header_bytes = 4 * (3 + n_blocks)
-    header_chars = 4 * ((header_bytes + 2) // 3)
-    header = base64.b64decode(text[:header_chars])
-    sizes = struct.unpack("<%dI" % n_blocks, header[12:header_bytes])
-    raw = base64.b64decode(text[header_chars:])
-    data, pos = b"", 0
-    for s in sizes:
-        data += zlib.decompress(raw[pos : pos + s])
-        pos += s
-    return np.frombuffer(data, dtype=dtype)
-
+try:
+    import meshio
+except ImportError:
+    sys.exit("wallette_load_share: needs python3-meshio (apt-get install python3-meshio)")
 
 def read_vtu(path):
     """Points, connectivity (one row per cell) and the point and cell data
-    arrays of a VTU file (ASCII or zlib-compressed binary)."""
-    piece = ET.parse(path).getroot().find("UnstructuredGrid/Piece")
-
-    def array(a):
-        dtype = TYPES[a.get("type")]
-        if a.get("format") == "binary":
-            d = decode_binary(a.text, dtype)
-        else:
-            d = np.array((a.text or "").split(), dtype=dtype)
-        n = int(a.get("NumberOfComponents", "1"))
-        return d.reshape(-1, n) if n > 1 else d
-
-    points = array(piece.find("Points/DataArray")).astype(float)
-    offsets = array(piece.find("Cells/DataArray[@Name='offsets']"))
-    conn = array(piece.find("Cells/DataArray[@Name='connectivity']")).reshape(len(offsets), -1)
+    arrays of a VTU file (meshio reads deal.II's and masonry's VTU)."""
+    mesh = meshio.read(path)
+    points = np.asarray(mesh.points, dtype=float)
+    conn = np.concatenate([block.data for block in mesh.cells])
     data = {}
-    for tag in ("PointData", "CellData"):
-        node = piece.find(tag)
-        if node is not None:
-            for a in node.iter("DataArray"):
-                data[a.get("Name")] = array(a).astype(float)
+    for name, values in mesh.point_data.items():
+        data[name] = np.asarray(values, dtype=float)
+    for name, blocks in mesh.cell_data.items():
+        data[name] = np.concatenate([np.asarray(b, dtype=float) for b in blocks])
     return points, conn, data
 
 

@@ -517,7 +517,7 @@ namespace masonry
       else
         line << options.n_u << " x " << options.n_v << " blocks per patch\n";
       if (a.contains("stopped"))
-        line << "Adaptation: stopped: " << a.at("stopped").as_string()
+        line << "Adaptation: stopped: " << a.at("stopped").get<std::string>()
              << (failed_stage > 0 ? "\n" : " (the result below says why)\n");
       pcout << line.str();
     }

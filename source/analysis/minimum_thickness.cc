@@ -132,7 +132,7 @@ namespace masonry
         summary["bisection_steps"]           = steps;
         pcout << "Result: minimum thickness factor " << std::setprecision(8)
               << hi << " (collapses at " << lo << "), thickness "
-              << summary.at("minimum_thickness").as_number()
+              << summary.at("minimum_thickness").get<double>()
               << " m at the centre of the first patch, " << steps
               << " LP solves\n";
         write_mechanism(motion, forces, context);

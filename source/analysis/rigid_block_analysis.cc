@@ -3,6 +3,7 @@
 #include <masonry/analysis/rigid_block_analysis.h>
 #include <masonry/core/json.h>
 #include <masonry/core/output_directory.h>
+#include <masonry/core/output_file.h>
 #include <masonry/core/parameters.h>
 #include <masonry/core/scripts.h>
 #include <masonry/geometry/interface.h>
@@ -15,7 +16,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
-#include <fstream>
 #include <iomanip>
 #include <limits>
 #include <map>
@@ -365,7 +365,7 @@ namespace masonry
                                RunContext               &context)
       {
         {
-          std::ofstream csv(context.output.file("adaptation.csv"));
+          OutputFile csv(context.output.file("adaptation.csv"));
           csv << "# convergence of the mesh adaptation: best and mean "
               << fitness << " per generation\n"
               << "generation,evaluations,best,mean,seconds\n"
@@ -373,13 +373,15 @@ namespace masonry
           for (const auto &g : result.history)
             csv << g.generation << "," << g.evaluations << "," << g.best << ","
                 << g.mean << "," << g.seconds << "\n";
+          csv.close();
         }
         if (picture)
           {
             const std::string dir = context.output.path();
             const std::string why =
               run_script("adaptation_plot.py",
-                         {dir + "adaptation.csv", dir + "adaptation.png"});
+                         {dir + "adaptation.csv", dir + "adaptation.png"},
+                         {dir + "adaptation.png"});
             if (why.empty())
               context.output.file("adaptation.png");
             else

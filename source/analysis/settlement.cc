@@ -191,7 +191,7 @@ namespace masonry
         summary["objective"]     = solution.objective * scale;
         summary["lp_objective"]  = solution.objective;
         pcout << "Result: optimal, work of the loads = " << std::setprecision(6)
-              << summary.at("external_work").as_number()
+              << summary.at("external_work").get<double>()
               << " J, dissipation = " << dissipation << " J, "
               << solution.iterations << " LP iterations\n";
 

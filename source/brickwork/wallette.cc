@@ -14,6 +14,7 @@
 #include <masonry/brickwork/interface_law.h>
 #include <masonry/brickwork/wallette.h>
 #include <masonry/core/output_directory.h>
+#include <masonry/core/stop_signals.h>
 
 #include <deal.II/base/multithread_info.h>
 #include <deal.II/distributed/shared_tria.h>
@@ -404,7 +405,8 @@ namespace masonry
       void
       Wallette::run()
       {
-        const auto start = Clock::now();
+        const auto  start = Clock::now();
+        StopSignals stop_signals;
         describe_model(*view, mortar);
         const std::vector<Segment> legs = protocol->legs();
         const double nominal = std::abs(settings.protocol.target_displacement /
@@ -688,6 +690,18 @@ namespace masonry
                 pcout << "Stopped: " << message << "\n";
                 break;
               }
+            // a batch system's time limit or Ctrl-C: stop here, with the
+            // checkpoint written below
+            if (const int signal = stop_signals.received(system.comm))
+              {
+                status  = "interrupted";
+                message = StopSignals::name(signal) + " received: stopped " +
+                          "after step " + std::to_string(progress.step) +
+                          "; `set Resume = true' continues from the "
+                          "checkpoint";
+                pcout << "Stopped: " << message << "\n";
+                break;
+              }
           }
         if (status != "completed")
           {
@@ -750,9 +764,10 @@ namespace masonry
         summary["seconds_assembly"] = a.seconds;
         summary["seconds_solve"]    = s.seconds;
         pcout << "Result: peak stress " << std::setprecision(6)
-              << summary["peak_stress"].as_number() * 1e-6 << " MPa at strain "
-              << summary["strain_at_peak"].as_number() << ", initial modulus "
-              << summary["initial_modulus"].as_number() * 1e-9 << " GPa; "
+              << summary["peak_stress"].get<double>() * 1e-6
+              << " MPa at strain " << summary["strain_at_peak"].get<double>()
+              << ", initial modulus "
+              << summary["initial_modulus"].get<double>() * 1e-9 << " GPa; "
               << progress.step << " steps, " << statistics.total_newton
               << " Newton iterations, " << statistics.total_cutbacks
               << " cut-backs";

@@ -3,6 +3,7 @@
 #include <masonry/core/application.h>
 #include <masonry/core/json.h>
 #include <masonry/core/output_directory.h>
+#include <masonry/core/output_file.h>
 #include <masonry/core/parameters.h>
 #include <masonry/core/plugins.h>
 #include <masonry/core/usage.h>
@@ -22,12 +23,20 @@
 #include <iostream>
 #include <map>
 #include <sstream>
+#include <thread>
 
 namespace masonry
 {
   namespace
   {
     const char *usage = usage_text;
+
+    /**
+     * How long (s) a rank whose analysis threw waits for the others to
+     * throw as well before it takes the error for its own and ends every
+     * rank: an error every rank sees is met within milliseconds.
+     */
+    constexpr double rank_error_wait = 10;
 
     /** Declare the driver's own top-level entries. */
     void
@@ -294,49 +303,75 @@ namespace masonry
     }
 
     /**
-     * Write summary.json: its file list, the non-finite results removed and
-     * named (JSON has no NaN). Rank 0 writes; returns "" or why it failed
-     * (on every rank).
+     * Write summary.json on this rank, with its file list. Returns "" or why
+     * it failed.
      */
     std::string
-    write_summary_file(Json            &summary,
-                       OutputDirectory &output,
-                       const MPI_Comm   comm)
+    write_summary_here(Json &summary, OutputDirectory &output)
     {
       output.file("summary.json");
       Json files = Json::array();
       for (const auto &f : output.files())
         files.push_back(f);
       summary["files"] = files;
+      try
+        {
+          OutputFile out(output.path() + "summary.json");
+          out << summary.dump(2) << "\n";
+          out.close();
+        }
+      catch (const std::exception &exc)
+        {
+          return one_line_message(exc);
+        }
+      return {};
+    }
+
+    /**
+     * Write summary.json (rank 0); returns "" or why it failed, on every
+     * rank.
+     */
+    std::string
+    write_summary_file(Json            &summary,
+                       OutputDirectory &output,
+                       const MPI_Comm   comm)
+    {
       std::string error;
       if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
-        {
-          const auto bad = summary.non_finite_members();
-          if (!bad.empty())
-            {
-              Json list = Json::array();
-              for (const auto &b : bad)
-                {
-                  list.push_back(b);
-                  if (b.find_first_of("/[") == std::string::npos)
-                    summary.erase(b);
-                }
-              summary["non_finite_results"] = list;
-              // nested ones: drop the whole member holding them
-              for (const auto &b : bad)
-                {
-                  const auto cut = b.find_first_of("/[");
-                  if (cut != std::string::npos)
-                    summary.erase(b.substr(0, cut));
-                }
-            }
-          std::ofstream out(output.path() + "summary.json");
-          out << summary.dump() << "\n";
-          out.close();
-          if (!out)
-            error = "cannot write '" + output.path() + "summary.json'";
-        }
+        error = write_summary_here(summary, output);
+      else
+        output.file("summary.json");
       return dealii::Utilities::MPI::broadcast(comm, error, 0);
+    }
+
+    /**
+     * Whether every rank of @p error_comm reaches this call within
+     * @p seconds: a rank whose analysis threw calls it, and if the others
+     * threw too (an error every rank sees), they meet here. A rank whose
+     * error the others did not see finds them still computing, or waiting in
+     * one of the analysis' collective operations that this rank will never
+     * join; it must end the run for all (MPI_Abort) instead of waiting.
+     * @p error_comm is a duplicate of the run's communicator used for nothing
+     * else, so that this barrier cannot match any other collective call.
+     */
+    bool
+    all_ranks_failed(const MPI_Comm error_comm, const double seconds)
+    {
+      if (dealii::Utilities::MPI::n_mpi_processes(error_comm) == 1)
+        return true;
+      MPI_Request request;
+      MPI_Ibarrier(error_comm, &request);
+      const auto until = std::chrono::steady_clock::now() +
+                         std::chrono::duration<double>(seconds);
+      int done = 0;
+      while (!done)
+        {
+          MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+          if (done || std::chrono::steady_clock::now() > until)
+            break;
+          std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        }
+      return done != 0;
     }
 
     /**
@@ -349,11 +384,6 @@ namespace masonry
                    const Log                             &log,
                    const std::filesystem::file_time_type &file_start)
     {
-      const auto bad = summary.non_finite_members();
-      if (!bad.empty())
-        return "the result '" + bad.front() +
-               "' is not a finite number (a value out of its physical range "
-               "in the parameter file?)";
       const auto csv = non_finite_in_csv(output);
       if (!csv.empty())
         return "non-finite numbers (nan/inf) in " + join(csv) +
@@ -363,7 +393,7 @@ namespace masonry
       if (!missing.empty())
         return "result files could not be written: " + join(missing);
       if (!log.good())
-        return "cannot write '" + output.path() + "log.txt'";
+        return log.error();
       return {};
     }
 
@@ -389,6 +419,9 @@ namespace masonry
 
       Log log(comm);
       log.open_file(output.file("log.txt"));
+      const std::string log_error =
+        dealii::Utilities::MPI::broadcast(comm, log.error(), 0);
+      AssertThrow(log_error.empty(), dealii::ExcMessage(log_error));
       dealii::ConditionalOStream pcout(log.stream(), true);
 
       pcout << "masonry " << MASONRY_VERSION << ": " << prm.get("Analysis")
@@ -401,11 +434,23 @@ namespace masonry
         pcout << "  (holds an earlier run: the files this run writes are "
                  "overwritten, the others are left alone)\n";
 
+      // rank 0 writes; every rank learns of a failure (no rank may go on
+      // into the analysis' collective operations alone)
+      std::string       prm_error;
+      const std::string used_name = output.file("parameters.prm");
       if (root)
-        {
-          std::ofstream used(output.file("parameters.prm"));
-          prm.print_parameters(used, dealii::ParameterHandler::ShortPRM);
-        }
+        try
+          {
+            OutputFile used(used_name);
+            prm.print_parameters(used, dealii::ParameterHandler::ShortPRM);
+            used.close();
+          }
+        catch (const std::exception &exc)
+          {
+            prm_error = one_line_message(exc);
+          }
+      prm_error = dealii::Utilities::MPI::broadcast(comm, prm_error, 0);
+      AssertThrow(prm_error.empty(), dealii::ExcMessage(prm_error));
 
       Json summary               = Json::object();
       summary["analysis"]        = prm.get("Analysis");
@@ -442,26 +487,75 @@ namespace masonry
           "]");
       };
 
+      // a run that is killed leaves a summary.json that says so (status
+      // `running', not complete) rather than an earlier run's
+      const std::string start_problem = write_summary();
+      AssertThrow(start_problem.empty(), dealii::ExcMessage(start_problem));
+
       RunContext context{comm, pcout, output, summary};
+      MPI_Comm   error_comm =
+        dealii::Utilities::MPI::duplicate_communicator(comm);
       try
         {
           analysis->run(context);
         }
       catch (const std::exception &exc)
         {
-          fail("error", one_line_message(exc));
+          std::string message = one_line_message(exc);
+          std::string status  = "error";
+          if (dynamic_cast<const NonFiniteJsonNumber *>(&exc) != nullptr)
+            {
+              // the member it was meant for was created (null) before the
+              // value failed: name it, and leave it out of summary.json
+              const std::string path = first_null_member(summary);
+              if (!path.empty())
+                {
+                  summary.erase(path.substr(0, path.find_first_of("/[")));
+                  summary["non_finite_results"] = Json::array({path});
+                }
+              message = "the result '" + (path.empty() ? "?" : path) +
+                        "' is not a finite number (a value out of its "
+                        "physical range in the parameter file?)";
+              status = "failed";
+            }
+          if (!all_ranks_failed(error_comm, rank_error_wait))
+            {
+              // an error of this rank alone: the others cannot be told, so
+              // this rank says why, records it and ends every rank
+              const unsigned int rank =
+                dealii::Utilities::MPI::this_mpi_process(comm);
+              const std::string text =
+                "rank " + std::to_string(rank) + " of " +
+                std::to_string(dealii::Utilities::MPI::n_mpi_processes(comm)) +
+                ": " + message;
+              summary["status"]   = status;
+              summary["complete"] = false;
+              summary["error"]    = text;
+              const std::string summary_error =
+                write_summary_here(summary, output);
+              std::cerr << "masonry: error: " << text << " [the results in "
+                        << output.path() << " are incomplete"
+                        << (summary_error.empty() ?
+                              "; summary.json has status '" + status + "'" :
+                              "; " + summary_error)
+                        << "; every rank is stopped]" << std::endl;
+              MPI_Abort(comm, 1);
+            }
+          dealii::Utilities::MPI::free_communicator(error_comm);
+          fail(status, message);
         }
-      if (summary.at("status").as_string() == "running")
+      dealii::Utilities::MPI::free_communicator(error_comm);
+      if (summary.at("status").get<std::string>() == "running")
         summary["status"] = "completed";
-      const std::string status = summary.at("status").as_string();
+      const std::string status = summary.at("status").get<std::string>();
       if (is_failure(status))
         {
           // the analysis' own words on why there is no result
           std::string why;
           for (const char *key : {"explanation", "message"})
             if (why.empty() && summary.contains(key) &&
-                summary.at(key).type() == Json::Type::string)
-              why = ": " + summary.at(key).as_string();
+                summary.at(key).is_string())
+              why = ": " + summary.at(key).get<std::string>();
           summary["analysis_status"] = status;
           fail("failed",
                "the analysis ended with status '" + status + "'" + why +
@@ -484,11 +578,11 @@ namespace masonry
       if (!stale.empty())
         pcout << "Note: files of an earlier run left in " << output.path()
               << " (not written by this run): " << join(stale) << "\n";
-      pcout << "Status: " << summary.at("status").as_string() << "\n"
+      pcout << "Status: " << summary.at("status").get<std::string>() << "\n"
             << "Results: " << output.path() << " ("
             << join_series(output.files()) << ")\n"
             << "Wall time: " << std::fixed << std::setprecision(2)
-            << summary.at("wall_seconds").as_number() << " s\n";
+            << summary.at("wall_seconds").get<double>() << " s\n";
       return 0;
     }
   } // namespace

@@ -1,5 +1,6 @@
 #include <masonry/core/json.h>
 #include <masonry/core/output_directory.h>
+#include <masonry/core/output_file.h>
 #include <masonry/core/parameters.h>
 
 #include <deal.II/base/exceptions.h>
@@ -7,9 +8,12 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <sstream>
 #include <streambuf>
+#include <sys/resource.h>
+#include <sys/statvfs.h>
 
 namespace masonry
 {
@@ -60,12 +64,12 @@ namespace masonry
                 text << old.rdbuf();
                 try
                   {
-                    const Json summary = Json::parse(text.str());
+                    const Json summary = parse_json(text.str());
                     if (summary.contains("files"))
                       for (std::size_t i = 0; i < summary.at("files").size();
                            ++i)
                         previous.push_back(
-                          summary.at("files").at(i).as_string());
+                          summary.at("files").at(i).get<std::string>());
                   }
                 catch (...)
                   {
@@ -150,6 +154,27 @@ namespace masonry
     return previous_run;
   }
 
+  void
+  throw_if_any_rank_failed(const std::string &error, const MPI_Comm comm)
+  {
+    for (const auto &e : dealii::Utilities::MPI::all_gather(comm, error))
+      AssertThrow(e.empty(), dealii::ExcMessage(e));
+  }
+
+  std::string
+  likely_write_reason(const std::string &directory, const std::string &fallback)
+  {
+    struct statvfs fs;
+    if (::statvfs(directory.c_str(), &fs) == 0 && fs.f_bavail == 0)
+      return "No space left on device";
+    struct rlimit limit;
+    if (::getrlimit(RLIMIT_FSIZE, &limit) == 0 &&
+        limit.rlim_cur != RLIM_INFINITY)
+      return "File too large (a file-size limit of " +
+             std::to_string(limit.rlim_cur) + " bytes)";
+    return fallback;
+  }
+
   /** A stream buffer writing to the screen and, once opened, to a file. */
   class Log::TeeBuffer : public std::streambuf
   {
@@ -212,6 +237,16 @@ namespace masonry
   Log::~Log()
   {
     out->flush();
+    if (file != nullptr)
+      try
+        {
+          // written in place: renames nothing, removes an incomplete log
+          file->close();
+        }
+      catch (...)
+        {
+          // the run has said why (error()); a destructor must not throw
+        }
   }
 
   std::ostream &
@@ -224,9 +259,18 @@ namespace masonry
   Log::good() const
   {
     if (file == nullptr)
-      return true;
+      return open_error.empty();
     file->flush();
-    return file->is_open() && file->good();
+    return file->good();
+  }
+
+  std::string
+  Log::error() const
+  {
+    if (file == nullptr)
+      return open_error;
+    file->flush();
+    return file->error();
   }
 
   void
@@ -234,7 +278,16 @@ namespace masonry
   {
     if (buffer->screen == nullptr)
       return;
-    file         = std::make_unique<std::ofstream>(filename);
+    try
+      {
+        file = std::make_unique<OutputFile>(filename, true);
+      }
+    catch (const std::exception &exc)
+      {
+        // said by error(): the caller decides with every rank what to do
+        open_error = one_line_message(exc);
+        return;
+      }
     buffer->file = file->rdbuf();
   }
 } // namespace masonry

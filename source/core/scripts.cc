@@ -1,9 +1,16 @@
+#include <masonry/core/output_file.h>
 #include <masonry/core/scripts.h>
 
+#include <deal.II/base/exceptions.h>
+
+#include <cstdio>
 #include <cstdlib>
 #include <dlfcn.h>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <system_error>
+#include <unistd.h>
 
 namespace masonry
 {
@@ -62,8 +69,41 @@ namespace masonry
     return "";
   }
 
+  namespace
+  {
+    /** The last non-empty line of @p text. */
+    std::string
+    last_line(const std::string &text)
+    {
+      std::string line;
+      std::size_t end = text.find_last_not_of("\n ");
+      if (end == std::string::npos)
+        return "";
+      const std::size_t start = text.rfind('\n', end);
+      line =
+        text.substr(start == std::string::npos ? 0 : start + 1,
+                    end + 1 - (start == std::string::npos ? 0 : start + 1));
+      return line;
+    }
+
+    /** The system's reason if @p error is a failed write, else "". */
+    std::string
+    write_failure(const std::string &error)
+    {
+      for (const char *reason : {"No space left on device",
+                                 "File too large",
+                                 "Disk quota exceeded",
+                                 "Input/output error"})
+        if (error.find(reason) != std::string::npos)
+          return reason;
+      return "";
+    }
+  } // namespace
+
   std::string
-  run_script(const std::string &name, const std::vector<std::string> &arguments)
+  run_script(const std::string              &name,
+             const std::vector<std::string> &arguments,
+             const std::vector<std::string> &outputs)
   {
     const std::string script = find_script(name);
     const std::string python = "/usr/bin/python3";
@@ -79,12 +119,49 @@ namespace masonry
         q += c == '\'' ? std::string("'\\''") : std::string(1, c);
       return q + "'";
     };
+    // the script's error output, to tell a missing module from a full disk
+    char      errors_name[] = "/tmp/masonry-script-XXXXXX";
+    const int errors_file   = ::mkstemp(errors_name);
+    if (errors_file >= 0)
+      ::close(errors_file);
     std::string command = python + " " + quoted(script);
     for (const auto &argument : arguments)
       command += " " + quoted(argument);
-    command += " >/dev/null 2>&1";
-    if (std::system(command.c_str()) != 0)
-      return name + " failed (needs python3-matplotlib)";
-    return "";
+    command += " >/dev/null 2>" +
+               (errors_file >= 0 ? quoted(errors_name) : std::string("&1"));
+    const int   status = std::system(command.c_str());
+    std::string errors;
+    if (errors_file >= 0)
+      {
+        std::ifstream     in(errors_name);
+        std::stringstream text;
+        text << in.rdbuf();
+        errors = text.str();
+        std::remove(errors_name);
+      }
+    if (status == 0)
+      return "";
+    for (const auto &output : outputs)
+      std::filesystem::remove(output, error);
+    const std::string reason = write_failure(errors);
+    if (!reason.empty())
+      AssertThrow(false,
+                  dealii::ExcMessage(
+                    write_error(outputs.empty() ?
+                                  "(the output of " + name + ")" :
+                                  outputs.front(),
+                                reason)));
+    const std::string cause   = last_line(errors);
+    const std::string missing = "No module named '";
+    const auto        m       = cause.find(missing);
+    if (m != std::string::npos)
+      {
+        const std::string module =
+          cause.substr(m + missing.size(),
+                       cause.find('\'', m + missing.size()) - m -
+                         missing.size());
+        return name + " needs python3-" + module.substr(0, module.find('.'));
+      }
+    return name + " failed" + (cause.empty() ? "" : " (" + cause + ")");
   }
 } // namespace masonry

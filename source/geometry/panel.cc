@@ -62,8 +62,8 @@ namespace masonry
           surface,
           "panel",
           vertical ?
-            std::array<std::string, 4>{"left", "right", "base", "top"} :
-            std::array<std::string, 4>{"left", "right", "front", "back"},
+            std::array<std::string, 4>{{"left", "right", "base", "top"}} :
+            std::array<std::string, 4>{{"left", "right", "front", "back"}},
           vertical ? NormalOrientation::reversed :
                      NormalOrientation::as_parametrised)});
       }

@@ -1,3 +1,4 @@
+#include <masonry/core/output_file.h>
 #include <masonry/lp/linear_program.h>
 
 #include <deal.II/base/exceptions.h>
@@ -320,16 +321,19 @@ namespace masonry
                      mps_names(r_names, 'R'));
       mps.setProblemName("MASONRY");
       mps.setObjectiveName("OBJ");
-      // extra accuracy: numbers are written so that they read back exactly
-      AssertThrow(mps.writeMps(filename.c_str(), 0, 1) == 0,
+      // CoinMpsIO writes the body to a temporary file (removed on leaving);
+      // the file appears under its name only with its header, whole.
+      // Extra accuracy: numbers are written so that they read back exactly
+      StagedFile body_file(filename + ".body");
+      AssertThrow(mps.writeMps(body_file.temporary_name().c_str(), 0, 1) == 0,
                   dealii::ExcMessage("Cannot write '" + filename + "'."));
 
       // CoinMpsIO writes no comments: put the sense first
-      std::ifstream in(filename);
+      std::ifstream in(body_file.temporary_name());
       std::string   body((std::istreambuf_iterator<char>(in)),
                        std::istreambuf_iterator<char>());
       in.close();
-      std::ofstream out(filename);
+      OutputFile out(filename);
       out << "* masonry linear program: " << m << " rows, " << n << " columns, "
           << n_nonzeros() << " entries\n";
       if (maximize)
@@ -339,7 +343,7 @@ namespace masonry
                "is\n"
                "* minus the maximum (do not pass -max/--max).\n";
       out << body;
-      AssertThrow(out, dealii::ExcMessage("Error writing '" + filename + "'."));
+      out.close();
     }
   } // namespace lp
 } // namespace masonry

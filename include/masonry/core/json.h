@@ -1,135 +1,115 @@
 /**
  * @file
- * A small JSON value for summary.json: objects keep insertion order, numbers
- * are written in the shortest form that reads back to the same double.
- * Writing and reading go through nlohmann::json (Debian's
- * nlohmann-json3-dev), kept out of this header.
+ * The project's JSON type: nlohmann::json (Debian's nlohmann-json3-dev) with
+ * objects in insertion order, as nlohmann::ordered_json, and one rule of
+ * its own: a number that is not finite cannot be stored. JSON has no NaN or
+ * infinity (nlohmann would write `null`), so a non-finite result is an
+ * error where it is put into a document, not a silent `null` in
+ * summary.json.
  */
 #ifndef masonry_core_json_h
 #define masonry_core_json_h
 
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <utility>
-#include <vector>
 
 namespace masonry
 {
   /**
-   * A JSON value: null, boolean, number, string, array or object.
+   * Thrown when a number that is not finite is put into a Json value. The
+   * driver names the summary member it was meant for and ends the run as
+   * `failed'.
    */
-  class Json
+  class NonFiniteJsonNumber : public std::domain_error
   {
   public:
-    /** The kind of value held. */
-    enum class Type
-    {
-      null,
-      boolean,
-      number,
-      string,
-      array,
-      object
-    };
-
-    Json() = default;
-    Json(bool value);
-    Json(double value);
-    Json(int value);
-    Json(unsigned int value);
-    Json(long value);
-    Json(unsigned long value);
-    Json(const char *value);
-    Json(const std::string &value);
-
-    /** An empty array. */
-    static Json
-    array();
-
-    /** An empty object. */
-    static Json
-    object();
-
-    /** The kind of value held. */
-    Type
-    type() const;
-
-    /**
-     * The member @p key of an object, created (as null) if missing; a null
-     * value becomes an object. Existing keys keep their position.
-     */
-    Json &
-    operator[](const std::string &key);
-
-    /** Whether an object has the member @p key. */
-    bool
-    contains(const std::string &key) const;
-
-    /** Append to an array (a null value becomes an array). */
-    void
-    push_back(const Json &value);
-
-    /** Number of elements of an array or members of an object. */
-    std::size_t
-    size() const;
-
-    /** The number held (a number value only). */
-    double
-    as_number() const;
-
-    /** The boolean held (a boolean value only). */
-    bool
-    as_bool() const;
-
-    /** The keys of an object, in insertion order. */
-    std::vector<std::string>
-    keys() const;
-
-    /** Remove the member @p key of an object, if present. */
-    void
-    erase(const std::string &key);
-
-    /**
-     * The paths ("a/b[2]") of every number in this value that is NaN or
-     * infinite: such a value cannot be written.
-     */
-    std::vector<std::string>
-    non_finite_members() const;
-
-    /** The string held (a string value only). */
-    const std::string &
-    as_string() const;
-
-    /** Element @p i of an array. */
-    const Json &
-    at(const std::size_t i) const;
-
-    /** Member @p key of an object (must exist). */
-    const Json &
-    at(const std::string &key) const;
-
-    /**
-     * The text of this value, indented by @p indent spaces per level.
-     * JSON has no NaN or infinity: a non-finite number throws an ExcMessage
-     * naming its path instead of being written as null.
-     */
-    std::string
-    dump(const unsigned int indent = 2) const;
-
-    /**
-     * Parse JSON text (used to read a previous run's summary.json). Throws
-     * an ExcMessage on malformed input.
-     */
-    static Json
-    parse(const std::string &text);
-
-  private:
-    Type                                      kind          = Type::null;
-    bool                                      boolean_value = false;
-    double                                    number_value  = 0;
-    std::string                               string_value;
-    std::vector<Json>                         array_values;
-    std::vector<std::pair<std::string, Json>> object_values;
+    explicit NonFiniteJsonNumber(const double value)
+      : std::domain_error("a number that is not finite (" +
+                          std::to_string(value) + ") cannot be stored in JSON")
+    {}
   };
+
+  namespace internal
+  {
+    /**
+     * nlohmann's serializer, with a check of every floating-point number
+     * that goes into a document (also the elements of containers).
+     */
+    template <typename T, typename = void>
+    struct JsonSerializer
+    {
+      template <typename BasicJson, typename Value>
+      static auto
+      to_json(BasicJson &j, Value &&value) noexcept(false)
+        -> decltype(nlohmann::adl_serializer<T>::to_json(
+                      j,
+                      std::forward<Value>(value)),
+                    void())
+      {
+        if constexpr (std::is_floating_point_v<std::decay_t<Value>>)
+          if (!std::isfinite(value))
+            throw NonFiniteJsonNumber(value);
+        nlohmann::adl_serializer<T>::to_json(j, std::forward<Value>(value));
+      }
+
+      template <typename BasicJson, typename Value>
+      static auto
+      from_json(BasicJson &&j, Value &value) noexcept(false)
+        -> decltype(nlohmann::adl_serializer<T>::from_json(
+                      std::forward<BasicJson>(j),
+                      value),
+                    void())
+      {
+        nlohmann::adl_serializer<T>::from_json(std::forward<BasicJson>(j),
+                                               value);
+      }
+
+      template <typename BasicJson>
+      static auto
+      from_json(BasicJson &&j) noexcept(false)
+        -> decltype(nlohmann::adl_serializer<T>::from_json(
+          std::forward<BasicJson>(j)))
+      {
+        return nlohmann::adl_serializer<T>::from_json(
+          std::forward<BasicJson>(j));
+      }
+    };
+  } // namespace internal
+
+  /**
+   * A JSON value (nlohmann::basic_json): objects keep the order in which
+   * their members were added, numbers are written in the shortest form that
+   * reads back to the same double, and a non-finite number throws
+   * NonFiniteJsonNumber where it is stored.
+   */
+  using Json = nlohmann::basic_json<nlohmann::ordered_map,
+                                    std::vector,
+                                    std::string,
+                                    bool,
+                                    std::int64_t,
+                                    std::uint64_t,
+                                    double,
+                                    std::allocator,
+                                    internal::JsonSerializer>;
+
+  /**
+   * Parse JSON text (a previous run's summary.json, a test's output).
+   * Throws an ExcMessage "malformed JSON: ..." on malformed input.
+   */
+  Json
+  parse_json(const std::string &text);
+
+  /**
+   * The path ("a/b[2]") of the first `null' member of @p value, in the order
+   * of the document, or "": where a value that could not be stored was
+   * meant to go (see NonFiniteJsonNumber).
+   */
+  std::string
+  first_null_member(const Json &value);
 } // namespace masonry
 
 #endif

@@ -7,7 +7,6 @@
 
 #include <deal.II/base/mpi.h>
 
-#include <fstream>
 #include <memory>
 #include <ostream>
 #include <string>
@@ -15,6 +14,8 @@
 
 namespace masonry
 {
+  class OutputFile;
+
   /**
    * The directory a run writes into. It is created if missing (with its
    * parents) and checked for writing; files are named through file(), which
@@ -74,6 +75,23 @@ namespace masonry
   };
 
   /**
+   * For files that every rank writes a share of: throws on every rank the
+   * first non-empty @p error of any rank (in rank order), so that a write
+   * that failed on one rank stops all of them together. Collective.
+   */
+  void
+  throw_if_any_rank_failed(const std::string &error, const MPI_Comm comm);
+
+  /**
+   * The likely reason why a library that does not say (HDF5) could not write
+   * into @p directory: "No space left on device" if the file system is
+   * full, "File too large" under a file-size limit, else @p fallback.
+   */
+  std::string
+  likely_write_reason(const std::string &directory,
+                      const std::string &fallback);
+
+  /**
    * Screen output of rank 0, copied to log.txt once the output directory is
    * known. Other ranks write nothing.
    */
@@ -91,15 +109,24 @@ namespace masonry
     bool
     good() const;
 
+    /**
+     * Why log.txt could not be written ("cannot write '...': REASON"), or
+     * "". A log.txt that could not be written whole is removed when the Log
+     * is destroyed.
+     */
+    std::string
+    error() const;
+
     /** Start copying everything written from now on to @p filename. */
     void
     open_file(const std::string &filename);
 
   private:
     class TeeBuffer;
-    std::unique_ptr<std::ofstream> file;
-    std::unique_ptr<TeeBuffer>     buffer;
-    std::unique_ptr<std::ostream>  out;
+    std::unique_ptr<OutputFile>   file;
+    std::unique_ptr<TeeBuffer>    buffer;
+    std::unique_ptr<std::ostream> out;
+    std::string                   open_error;
   };
 } // namespace masonry
 

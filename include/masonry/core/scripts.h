@@ -51,15 +51,24 @@ namespace masonry
   /**
    * Run the installed script @p name (find_script()) with `/usr/bin/python3`
    * and @p arguments (each passed as one argument), its output discarded.
-   * Returns "" if it ran and exited with 0, otherwise why not: "NAME not
-   * found", "/usr/bin/python3 not found" or "NAME failed (needs
-   * python3-matplotlib)". The caller names the files the script wrote
-   * (OutputDirectory::file()) only on success: a file named but not written
-   * makes the run `failed'.
+   * Returns "" if it ran and exited with 0, otherwise why not, in the words
+   * of the cause: "NAME not found", "/usr/bin/python3 not found", "NAME
+   * needs python3-matplotlib" (a module that is not installed, with its
+   * Debian package), or "NAME failed (the script's last error line)".
+   *
+   * @p outputs are the files the script writes: if it fails, they are
+   * removed, so that a picture is whole or absent. If it failed because a
+   * file could not be written (a full disk, a file-size limit, an I/O
+   * error), that is no reason to go on: run_script() throws an ExcMessage
+   * "cannot write 'FILE': REASON" naming the first of @p outputs.
+   *
+   * The caller names the files the script wrote (OutputDirectory::file())
+   * only on success: a file named but not written makes the run `failed'.
    */
   std::string
   run_script(const std::string              &name,
-             const std::vector<std::string> &arguments);
+             const std::vector<std::string> &arguments,
+             const std::vector<std::string> &outputs = {});
 } // namespace masonry
 
 #endif

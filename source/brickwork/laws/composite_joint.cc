@@ -5,6 +5,8 @@
  */
 #include <masonry/brickwork/laws/composite_joint.h>
 
+#include <Eigen/LU>
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -25,41 +27,37 @@ namespace masonry
           throw std::invalid_argument("composite joint: " + what);
         }
 
-        /** Dense solve of the n x n system A x = b (n <= 5) by Gaussian
-         * elimination with partial pivoting; false if singular. */
-        bool
-        solve(double A[5][5], double b[5], const unsigned int n)
+        /** Small dense matrices and vectors of the return mapping. */
+        using Matrix = Eigen::
+          Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor, 5, 5>;
+        using Vector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 5, 1>;
+
+        /** LU decomposition with partial pivoting of the leading n x n
+         * block of A (n <= 5). */
+        Eigen::PartialPivLU<Matrix>
+        factorise(const double A[5][5], const unsigned int n)
         {
-          for (unsigned int k = 0; k < n; ++k)
-            {
-              unsigned int piv = k;
-              for (unsigned int i = k + 1; i < n; ++i)
-                if (std::abs(A[i][k]) > std::abs(A[piv][k]))
-                  piv = i;
-              if (!(std::abs(A[piv][k]) > 1e-300))
-                return false;
-              if (piv != k)
-                {
-                  for (unsigned int j = 0; j < n; ++j)
-                    std::swap(A[k][j], A[piv][j]);
-                  std::swap(b[k], b[piv]);
-                }
-              for (unsigned int i = k + 1; i < n; ++i)
-                {
-                  const double f = A[i][k] / A[k][k];
-                  for (unsigned int j = k; j < n; ++j)
-                    A[i][j] -= f * A[k][j];
-                  b[i] -= f * b[k];
-                }
-            }
-          for (int i = int(n) - 1; i >= 0; --i)
-            {
-              double s = b[i];
-              for (unsigned int j = i + 1; j < n; ++j)
-                s -= A[i][j] * b[j];
-              b[i] = s / A[i][i];
-            }
-          return true;
+          return Eigen::PartialPivLU<Matrix>(
+            Eigen::Map<
+              const Eigen::
+                Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>,
+              0,
+              Eigen::OuterStride<5>>(&A[0][0], n, n));
+        }
+
+        /** Whether a pivot of @p lu vanishes (a singular system). */
+        bool
+        singular(const Eigen::PartialPivLU<Matrix> &lu)
+        {
+          return !(lu.matrixLU().diagonal().cwiseAbs().minCoeff() > 1e-300);
+        }
+
+        /** Solves (LU) x = b for the first n entries of b, x into b. */
+        void
+        solve(const Eigen::PartialPivLU<Matrix> &lu, double b[5])
+        {
+          Eigen::Map<Vector> x(b, lu.rows());
+          x = lu.solve(Vector(x));
         }
 
         constexpr unsigned int tension = 1, shear = 2, cap = 4;
@@ -493,8 +491,10 @@ namespace masonry
                 double dx[5];
                 for (unsigned int i = 0; i < n; ++i)
                   dx[i] = -R[i];
-                if (!solve(Js, dx, n))
+                const auto lu = factorise(Js, n);
+                if (singular(lu))
                   return false;
+                solve(lu, dx);
                 // unscale: x = Dc y
                 dx[0] *= s_ref;
                 dx[1] *= s_ref;
@@ -691,17 +691,15 @@ namespace masonry
             // algorithmic tangent: d x / d trial = J^-1 (-dR/d trial)
             double R[5], Js[5][5];
             L.residual(R, Js, true, L.x);
+            const auto lu = factorise(Js, L.n);
+            if (singular(lu))
+              return false;
             for (unsigned int col = 0; col < 2; ++col)
               {
                 // dR/d sigma_trial = -1/kn on row 0 (scaled: -1/(kn u_ref))
                 double rhs[5] = {0, 0, 0, 0, 0};
                 rhs[col]      = (col == 0 ? 1 / kn : 1 / ks) / L.u_ref;
-                double Jc[5][5];
-                for (unsigned int i = 0; i < 5; ++i)
-                  for (unsigned int j = 0; j < 5; ++j)
-                    Jc[i][j] = Js[i][j];
-                if (!solve(Jc, rhs, L.n))
-                  return false;
+                solve(lu, rhs);
                 A[0][col] = rhs[0] * L.s_ref;
                 A[1][col] = rhs[1] * L.s_ref;
               }

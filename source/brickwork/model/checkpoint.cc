@@ -3,6 +3,7 @@
  * Checkpoint files.
  */
 #include <masonry/core/output_directory.h>
+#include <masonry/core/output_file.h>
 #include <masonry/core/parameters.h>
 
 #include "checkpoint.h"
@@ -40,7 +41,7 @@ namespace masonry
         std::string
         file_name(RunContext &context)
         {
-          return context.output.path() + "/checkpoint." +
+          return context.output.path() + "checkpoint." +
                  std::to_string(
                    Utilities::MPI::this_mpi_process(context.mpi_communicator));
         }
@@ -53,25 +54,37 @@ namespace masonry
       {
         const MPI_Comm    comm = context.mpi_communicator;
         const std::string name = file_name(context);
-        {
-          std::ofstream                   out(name + ".tmp", std::ios::binary);
-          boost::archive::binary_oarchive ar(out);
-          unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
-          types::global_dof_index n_dofs = parts.system.dof_handler.n_dofs();
-          ar &n_ranks            &n_dofs;
-          serialize_parts(ar, parts);
-          std::vector<std::pair<types::global_dof_index, double>> values;
-          std::vector<double>                                     increments;
-          for (const auto i : parts.system.owned)
+        // written under a temporary name and renamed when whole: a run
+        // killed while writing keeps its previous checkpoint; a rank that
+        // cannot write stops every rank
+        std::string error;
+        try
+          {
+            OutputFile out(name);
             {
-              values.emplace_back(i, parts.system.u[i]);
-              increments.push_back(parts.system.last_increment[i]);
+              boost::archive::binary_oarchive ar(out);
+              unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+              types::global_dof_index n_dofs =
+                parts.system.dof_handler.n_dofs();
+              ar &n_ranks &n_dofs;
+              serialize_parts(ar, parts);
+              std::vector<std::pair<types::global_dof_index, double>> values;
+              std::vector<double> increments;
+              for (const auto i : parts.system.owned)
+                {
+                  values.emplace_back(i, parts.system.u[i]);
+                  increments.push_back(parts.system.last_increment[i]);
+                }
+              std::string             s = status;
+              ar &values &increments &s;
             }
-          std::string             s = status;
-          ar &values &increments &s;
-        }
-        // replace the old checkpoint only once the new one is complete
-        std::filesystem::rename(name + ".tmp", name);
+            out.close();
+          }
+        catch (const std::exception &exc)
+          {
+            error = one_line_message(exc);
+          }
+        throw_if_any_rank_failed(error, comm);
         context.output.file(
           "checkpoint." +
           std::to_string(Utilities::MPI::this_mpi_process(comm)));

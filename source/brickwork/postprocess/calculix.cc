@@ -6,6 +6,7 @@
  * the same node numbering (nodal_displacements.csv).
  */
 #include <masonry/core/output_directory.h>
+#include <masonry/core/output_file.h>
 
 #include <fstream>
 #include <iomanip>
@@ -61,12 +62,12 @@ namespace masonry
             view.context.output.file("nodal_displacements.csv");
           if (Utilities::MPI::this_mpi_process(view.system.comm) != 0)
             return;
-          const double  height = view.geometry.height;
-          const double  tol    = 1e-9 * height;
-          const auto   &dir    = settings.platen.direction;
-          const double  target = settings.protocol.target_displacement;
-          const bool    fixed  = settings.platen.lateral_fixed;
-          std::ofstream out(inp);
+          const double height = view.geometry.height;
+          const double tol    = 1e-9 * height;
+          const auto  &dir    = settings.platen.direction;
+          const double target = settings.protocol.target_displacement;
+          const bool   fixed  = settings.platen.lateral_fixed;
+          OutputFile   out(inp);
           // CalculiX reads fields of at most 20 characters
           out << std::setprecision(15);
           out << "** masonry wallette: " << triangulation.n_active_cells()
@@ -111,13 +112,15 @@ namespace masonry
                   << std::defaultfloat << std::setprecision(15) << "\n";
           out << "*NODE PRINT, NSET=NALL\nU\n*NODE PRINT, NSET=TOP, "
                  "TOTALS=ONLY\nRF\n*END STEP\n";
-          std::ofstream d(csv);
+          out.close();
+          OutputFile d(csv);
           d << std::setprecision(17) << "node,x,y,z,u_x,u_y,u_z\n";
           for (unsigned int v = 0; v < all.size(); ++v)
             if (node[v])
               d << node[v] << "," << all[v][0] << "," << all[v][1] << ","
                 << all[v][2] << "," << ghosted[dofs[v][0]] << ","
                 << ghosted[dofs[v][1]] << "," << ghosted[dofs[v][2]] << "\n";
+          d.close();
         }
       } // namespace
 

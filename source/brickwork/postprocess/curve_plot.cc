@@ -38,7 +38,10 @@ namespace masonry
             if (dealii::Utilities::MPI::this_mpi_process(view.system.comm) != 0)
               return;
             const std::string why =
-              run_script("wallette_curve.py", {view.context.output.path()});
+              run_script("wallette_curve.py",
+                         {view.context.output.path()},
+                         {view.context.output.path() + "curve.png",
+                          view.context.output.path() + "degradation.png"});
             if (why.empty())
               {
                 view.context.output.file("curve.png");

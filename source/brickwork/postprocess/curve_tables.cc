@@ -6,10 +6,13 @@
  * initial modulus, gauge, work, cycles).
  */
 #include <masonry/core/output_directory.h>
+#include <masonry/core/output_file.h>
 
 #include <deal.II/base/mpi.h>
 
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <iomanip>
 #include <limits>
@@ -171,8 +174,10 @@ namespace masonry
           {
             if (dealii::Utilities::MPI::this_mpi_process(view.system.comm) != 0)
               return;
-            std::ofstream out(view.context.output.path() + "/curve.csv",
-                              header ? std::ios::trunc : std::ios::app);
+            // curve.csv grows line by line, so that a user can follow a long
+            // run; a line that cannot be written ends the run
+            const std::string path = view.context.output.path() + "curve.csv";
+            std::ofstream out(path, header ? std::ios::trunc : std::ios::app);
             out << std::setprecision(12);
             if (header)
               {
@@ -193,6 +198,9 @@ namespace masonry
               out << ","
                   << (k < p.brick_damages.size() ? p.brick_damages[k] : 0.);
             out << "\n";
+            out.close();
+            AssertThrow(
+              out, dealii::ExcMessage(write_error(path, std::strerror(errno))));
           }
 
           void
@@ -208,7 +216,7 @@ namespace masonry
             view.context.output.file("cycles.csv");
             if (root)
               {
-                std::ofstream out(dir + "/cycles.csv");
+                OutputFile out(dir + "cycles.csv");
                 out << std::setprecision(12);
                 out << "cycle,amplitude_strain,peak_stress_Pa,strain_at_peak,"
                        "residual_strain,unloading_modulus_Pa,"
@@ -219,6 +227,7 @@ namespace masonry
                       << "," << c.unloading_modulus << ","
                       << (modulus > 0 ? c.unloading_modulus / modulus : 0.)
                       << "," << c.dissipated_energy << "\n";
+                out.close();
               }
             // envelope (first cycle at each amplitude), stability point
             // (last cycle) and common point
@@ -226,7 +235,7 @@ namespace masonry
               view.settings.protocol.cycles_per_amplitude;
             if (root)
               {
-                std::ofstream out(dir + "/envelope.csv");
+                OutputFile out(dir + "envelope.csv");
                 out << std::setprecision(12)
                     << "amplitude_strain,envelope_strain,envelope_stress_Pa,"
                        "common_point_stress_Pa,stability_point_stress_Pa\n";
@@ -248,6 +257,7 @@ namespace masonry
                       out << common;
                     out << "," << lastc.peak_stress << "\n";
                   }
+                out.close();
               }
             view.context.output.file("envelope.csv");
             Json list = Json::array();

@@ -8,7 +8,9 @@
  * installed script contrib/plot/wallette_failure.py (matplotlib, run with
  * /usr/bin/python3) draws the picture from it.
  */
+#include <masonry/core/json.h>
 #include <masonry/core/output_directory.h>
+#include <masonry/core/output_file.h>
 #include <masonry/core/scripts.h>
 
 #include <deal.II/base/mpi.h>
@@ -188,37 +190,37 @@ namespace masonry
 
           const CurvePoint &last = view.curve.back();
           {
-            std::ofstream out(view.context.output.file("failure.json"));
-            out << std::setprecision(9);
-            out << "{\n\"width\": " << width << ",\n\"height\": " << height
-                << ",\n\"magnification\": " << factor
-                << ",\n\"opening_threshold\": " << threshold
-                << ",\n\"strain\": " << last.strain
-                << ",\n\"stress\": " << last.stress << ",\n\"damage\": \""
-                << (n_damage > 0 ? "largest of " : "none");
+            // the picture's data, for wallette_failure.py and the user
+            Json data                 = Json::object();
+            data["width"]             = width;
+            data["height"]            = height;
+            data["magnification"]     = factor;
+            data["opening_threshold"] = threshold;
+            data["strain"]            = last.strain;
+            data["stress"]            = last.stress;
+            std::string damage        = n_damage > 0 ? "largest of " : "none";
             if (n_damage > 0)
               {
                 const auto names = material.damage_names();
                 for (unsigned int k = 0; k < names.size(); ++k)
-                  out << (k ? ", " : "") << names[k];
+                  damage += (k ? ", " : "") + names[k];
               }
-            out << "\",\n\"cells\": [\n";
+            data["damage"] = damage;
+            Json rows      = Json::array();
             for (unsigned int c = 0; c < n_cells; ++c)
-              {
-                out << (c ? ",\n[" : "[");
-                for (unsigned int k = 0; k < cell_size; ++k)
-                  out << (k ? "," : "") << cells[c * cell_size + k];
-                out << "]";
-              }
-            out << "],\n\"joints\": [\n";
+              rows.push_back(
+                std::vector<double>(cells.begin() + c * cell_size,
+                                    cells.begin() + (c + 1) * cell_size));
+            data["cells"] = std::move(rows);
+            rows          = Json::array();
             for (unsigned int f = 0; f < n_open; ++f)
-              {
-                out << (f ? ",\n[" : "[");
-                for (unsigned int k = 0; k < face_size; ++k)
-                  out << (k ? "," : "") << faces[f * face_size + k];
-                out << "]";
-              }
-            out << "]\n}\n";
+              rows.push_back(
+                std::vector<double>(faces.begin() + f * face_size,
+                                    faces.begin() + (f + 1) * face_size));
+            data["joints"] = std::move(rows);
+            OutputFile out(view.context.output.file("failure.json"));
+            out << data.dump(1) << "\n";
+            out.close();
           }
 
           Json &s                         = summary["failure_plot"];
@@ -232,7 +234,9 @@ namespace masonry
           s["cells_damage_over_half"] = double(n_damaged);
 
           const std::string why =
-            run_script("wallette_failure.py", {view.context.output.path()});
+            run_script("wallette_failure.py",
+                       {view.context.output.path()},
+                       {view.context.output.path() + "failure.png"});
           if (why.empty()) // named as a file of the run only once drawn
             view.context.output.file("failure.png");
           else

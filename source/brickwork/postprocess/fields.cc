@@ -5,6 +5,8 @@
  * a VTU/PVTU time series (solution.pvd) or HDF5 + XDMF (solution.xdmf).
  */
 #include <masonry/core/output_directory.h>
+#include <masonry/core/output_file.h>
+#include <masonry/core/parameters.h>
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
@@ -17,7 +19,9 @@
 #include <boost/serialization/utility.hpp>
 #include <boost/serialization/vector.hpp>
 
-#include <fstream>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <sstream>
 
 #include "../model/deletion.h"
@@ -220,13 +224,35 @@ namespace masonry
           // mesh and fields of this step in one HDF5 file, written by all
           // ranks; solution.xdmf lists the steps with their times
           const MPI_Comm             comm = view.system.comm;
-          const std::string          dir  = view.context.output.path() + "/";
+          const std::string          dir  = view.context.output.path();
           DataOutBase::DataOutFilter filter(
             DataOutBase::DataOutFilterFlags(false, true));
           data_out.write_filtered_data(filter);
           const std::string h5 =
             "solution_" + Utilities::int_to_string(step, 4) + ".h5";
-          data_out.write_hdf5_parallel(filter, dir + h5, comm);
+          // written by all ranks under one temporary name (rank 0's),
+          // renamed by rank 0 once every rank has returned
+          const std::string temporary =
+            Utilities::MPI::broadcast(comm, temporary_file_name(dir + h5), 0);
+          std::string error;
+          try
+            {
+              data_out.write_hdf5_parallel(filter, temporary, comm);
+            }
+          catch (const std::exception &)
+            {
+              error = write_error(dir + h5,
+                                  likely_write_reason(dir,
+                                                      "the HDF5 library "
+                                                      "failed"));
+            }
+          if (!error.empty() && Utilities::MPI::this_mpi_process(comm) == 0)
+            std::remove(temporary.c_str());
+          throw_if_any_rank_failed(error, comm);
+          if (Utilities::MPI::this_mpi_process(comm) == 0 &&
+              std::rename(temporary.c_str(), (dir + h5).c_str()) != 0)
+            error = write_error(dir + h5, std::strerror(errno));
+          throw_if_any_rank_failed(error, comm);
           const XDMFEntry entry =
             data_out.create_xdmf_entry(filter, h5, time, comm);
           if (!pvd.empty() && pvd.back().second == h5)
@@ -236,7 +262,25 @@ namespace masonry
               xdmf.push_back(entry);
               pvd.emplace_back(time, h5);
             }
-          data_out.write_xdmf_file(xdmf, dir + "solution.xdmf", comm);
+          // solution.xdmf (rank 0 writes it) is replaced whole
+          const std::string xdmf_name = dir + "solution.xdmf";
+          const std::string xdmf_temporary =
+            Utilities::MPI::broadcast(comm, temporary_file_name(xdmf_name), 0);
+          error.clear();
+          try
+            {
+              data_out.write_xdmf_file(xdmf, xdmf_temporary, comm);
+              if (Utilities::MPI::this_mpi_process(comm) == 0 &&
+                  std::rename(xdmf_temporary.c_str(), xdmf_name.c_str()) != 0)
+                error = write_error(xdmf_name, std::strerror(errno));
+            }
+          catch (const std::exception &)
+            {
+              error = write_error(xdmf_name,
+                                  likely_write_reason(dir, "an I/O error"));
+              std::remove(xdmf_temporary.c_str());
+            }
+          throw_if_any_rank_failed(error, comm);
           view.context.output.file(h5);
           view.context.output.file("solution.xdmf");
         }
@@ -248,27 +292,55 @@ namespace masonry
                           const double       time)
         {
           const MPI_Comm    comm = view.system.comm;
-          const std::string dir  = view.context.output.path() + "/";
-          const std::string pvtu =
-            data_out.write_vtu_with_pvtu_record(dir, "solution", step, comm, 4);
+          const std::string dir  = view.context.output.path();
+          // each rank its piece, rank 0 the record; every file under a
+          // temporary name until it is whole (as write_vtu_with_pvtu_record
+          // names them)
+          const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+          const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
+          const std::string  stem =
+            "solution_" + Utilities::int_to_string(step, 4);
+          const auto piece = [&](const unsigned int r) {
+            return stem + "." +
+                   Utilities::int_to_string(r,
+                                            Utilities::needed_digits(n_ranks -
+                                                                     1)) +
+                   ".vtu";
+          };
+          const std::string pvtu = stem + ".pvtu";
+          std::string       error;
+          try
+            {
+              OutputFile out(dir + piece(rank));
+              data_out.write_vtu(out);
+              out.close();
+              if (rank == 0)
+                {
+                  std::vector<std::string> pieces;
+                  for (unsigned int r = 0; r < n_ranks; ++r)
+                    pieces.push_back(piece(r));
+                  OutputFile record(dir + pvtu);
+                  data_out.write_pvtu_record(record, pieces);
+                  record.close();
+                }
+            }
+          catch (const std::exception &exc)
+            {
+              error = one_line_message(exc);
+            }
+          throw_if_any_rank_failed(error, comm);
           // the last state of a stopped run may repeat the last output step
           if (pvd.empty() || pvd.back().second != pvtu)
             pvd.emplace_back(time, pvtu);
-          // record the files written by DataOut
+          // record the files written
           view.context.output.file(pvtu);
-          const std::string stem =
-            "solution_" + Utilities::int_to_string(step, 4);
-          const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
           for (unsigned int r = 0; r < n_ranks; ++r)
-            view.context.output.file(
-              stem + "." +
-              Utilities::int_to_string(r,
-                                       Utilities::needed_digits(n_ranks - 1)) +
-              ".vtu");
-          if (Utilities::MPI::this_mpi_process(comm) == 0)
+            view.context.output.file(piece(r));
+          if (rank == 0)
             {
-              std::ofstream out(view.context.output.file("solution.pvd"));
+              OutputFile out(view.context.output.file("solution.pvd"));
               DataOutBase::write_pvd_record(out, pvd);
+              out.close();
             }
         }
       } // namespace

@@ -6,10 +6,11 @@
  * series (interfaces.pvd).
  */
 #include <masonry/core/output_directory.h>
+#include <masonry/core/output_file.h>
+#include <masonry/core/vtu_grid.h>
 
 #include <deal.II/base/data_out_base.h>
 
-#include <fstream>
 #include <iomanip>
 #include <sstream>
 
@@ -152,44 +153,26 @@ namespace masonry
             pvd.emplace_back(time, name.str());
           if (Utilities::MPI::this_mpi_process(view.system.comm) != 0)
             return;
-          const auto        &faces = view.joints.faces;
-          const unsigned int n     = faces.size();
-          std::ofstream      out(file);
-          out << std::setprecision(10);
-          out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" "
-                 "version=\"0.1\" byte_order=\"LittleEndian\">\n"
-                 "<UnstructuredGrid>\n<Piece NumberOfPoints=\""
-              << 4 * n << "\" NumberOfCells=\"" << n << "\">\n"
-              << "<Points>\n<DataArray type=\"Float64\" "
-                 "NumberOfComponents=\"3\" format=\"ascii\">\n";
+          // one quadrilateral per face pair, the values as cell data
+          const auto &faces = view.joints.faces;
+          VtuGrid     grid;
+          grid.nodes_per_cell         = 4;
+          grid.cell_type              = 9;
           const unsigned int order[4] = {0, 1, 3, 2};
           for (const auto &face : faces)
             for (unsigned int v = 0; v < 4; ++v)
-              out << face.vertices[order[v]] << "\n";
-          out << "</DataArray>\n</Points>\n<Cells>\n<DataArray "
-                 "type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-          for (unsigned int i = 0; i < 4 * n; ++i)
-            out << i << (i % 4 == 3 ? "\n" : " ");
-          out << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" "
-                 "format=\"ascii\">\n";
-          for (unsigned int i = 0; i < n; ++i)
-            out << 4 * (i + 1) << "\n";
-          out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" "
-                 "format=\"ascii\">\n";
-          for (unsigned int i = 0; i < n; ++i)
-            out << "9\n";
-          out << "</DataArray>\n</Cells>\n<CellData>\n";
+              {
+                grid.connectivity.push_back(grid.points.size());
+                grid.points.push_back(face.vertices[order[v]]);
+              }
           for (unsigned int k = 0; k < names.size(); ++k)
-            {
-              out << "<DataArray type=\"Float64\" Name=\"" << names[k]
-                  << "\" format=\"ascii\">\n";
-              for (const double x : values[k])
-                out << x << "\n";
-              out << "</DataArray>\n";
-            }
-          out << "</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
-          std::ofstream pvd_out(view.context.output.file("interfaces.pvd"));
+            grid.cell_data.emplace_back(names[k], values[k]);
+          OutputFile out(file);
+          grid.write(out);
+          out.close();
+          OutputFile pvd_out(view.context.output.file("interfaces.pvd"));
           DataOutBase::write_pvd_record(pvd_out, pvd);
+          pvd_out.close();
         }
       } // namespace
 

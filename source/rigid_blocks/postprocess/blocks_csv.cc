@@ -3,9 +3,9 @@
  * Postprocessor `blocks csv`: blocks.csv.
  */
 #include <masonry/core/output_directory.h>
+#include <masonry/core/output_file.h>
 #include <masonry/rigid_blocks/postprocess/interface.h>
 
-#include <fstream>
 #include <iomanip>
 
 namespace masonry
@@ -27,9 +27,9 @@ namespace masonry
         {
           if (!result.is_root())
             return;
-          const auto   &blocks = result.model().blocks();
-          const auto   &motion = result.motion();
-          std::ofstream csv(context.output.file("blocks.csv"));
+          const auto &blocks = result.model().blocks();
+          const auto &motion = result.motion();
+          OutputFile  csv(context.output.file("blocks.csv"));
           csv << "block,patch,centroid_x,centroid_y,centroid_z,"
                  "translation_x_m,translation_y_m,translation_z_m,"
                  "rotation_x_rad,rotation_y_rad,rotation_z_rad\n"
@@ -45,6 +45,7 @@ namespace masonry
                 csv << "," << motion.rotation[b][d];
               csv << "\n";
             }
+          csv.close();
         }
       };
     } // namespace postprocess

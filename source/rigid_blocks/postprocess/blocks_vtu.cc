@@ -3,10 +3,10 @@
  * Postprocessor `blocks vtu`: blocks.vtu.
  */
 #include <masonry/core/output_directory.h>
+#include <masonry/core/output_file.h>
+#include <masonry/core/vtu_grid.h>
 #include <masonry/rigid_blocks/postprocess/interface.h>
-#include <masonry/rigid_blocks/postprocess/vtu.h>
 
-#include <fstream>
 
 namespace masonry
 {
@@ -80,8 +80,9 @@ namespace masonry
           grid.integer_cell_data.emplace_back("patch", std::move(patch));
           grid.point_vectors.emplace_back("displacement",
                                           std::move(displacement));
-          std::ofstream out(context.output.file("blocks.vtu"));
+          OutputFile out(context.output.file("blocks.vtu"));
           grid.write(out);
+          out.close();
         }
       };
     } // namespace postprocess

@@ -3,9 +3,9 @@
  * Postprocessor `interface forces`: interface_forces.csv.
  */
 #include <masonry/core/output_directory.h>
+#include <masonry/core/output_file.h>
 #include <masonry/rigid_blocks/postprocess/interface.h>
 
-#include <fstream>
 #include <iomanip>
 
 namespace masonry
@@ -27,8 +27,8 @@ namespace masonry
         {
           if (!result.is_root())
             return;
-          const auto   &interfaces = result.model().interfaces();
-          std::ofstream csv(context.output.file("interface_forces.csv"));
+          const auto &interfaces = result.model().interfaces();
+          OutputFile  csv(context.output.file("interface_forces.csv"));
           csv << "interface,first_block,second_block,x,y,z,intrados,"
                  "normal_force_N,shear_across_N,shear_along_N\n"
               << std::setprecision(10);
@@ -46,6 +46,7 @@ namespace masonry
                     << c.position[2] << "," << (c.intrados ? 1 : 0) << ","
                     << f[0] << "," << f[1] << "," << f[2] << "\n";
               }
+          csv.close();
         }
       };
     } // namespace postprocess

@@ -3,10 +3,10 @@
  * Postprocessor `interfaces vtu`: interfaces.vtu.
  */
 #include <masonry/core/output_directory.h>
+#include <masonry/core/output_file.h>
+#include <masonry/core/vtu_grid.h>
 #include <masonry/rigid_blocks/postprocess/interface.h>
-#include <masonry/rigid_blocks/postprocess/vtu.h>
 
-#include <fstream>
 
 namespace masonry
 {
@@ -67,8 +67,9 @@ namespace masonry
           grid.cell_type      = 9;
           grid.cell_data.emplace_back("opening", std::move(opening));
           grid.cell_data.emplace_back("normal_force", std::move(normal_force));
-          std::ofstream out(context.output.file("interfaces.vtu"));
+          OutputFile out(context.output.file("interfaces.vtu"));
           grid.write(out);
+          out.close();
         }
       };
     } // namespace postprocess

@@ -3,10 +3,10 @@
  * Postprocessor `thrust line`: thrust_line.csv.
  */
 #include <masonry/core/output_directory.h>
+#include <masonry/core/output_file.h>
 #include <masonry/rigid_blocks/postprocess/interface.h>
 
 #include <cmath>
-#include <fstream>
 #include <iomanip>
 
 namespace masonry
@@ -34,7 +34,7 @@ namespace masonry
         {
           if (!result.is_root() || result.supports_move())
             return;
-          std::ofstream csv(context.output.file("thrust_line.csv"));
+          OutputFile csv(context.output.file("thrust_line.csv"));
           csv << "# line of thrust: per interface the centre of pressure of "
                  "the normal contact forces (m), the resultant normal force N "
                  "and shear forces (N, from the LP dual), the eccentricity e "
@@ -76,6 +76,7 @@ namespace masonry
                   << "," << sa << "," << sl << "," << e << ","
                   << (half > 0 ? e / half : 0.) << "\n";
             }
+          csv.close();
         }
       };
     } // namespace postprocess

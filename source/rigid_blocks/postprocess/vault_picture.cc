@@ -72,13 +72,14 @@ namespace masonry
           OutputDirectory   &dir = context.output;
           std::ostringstream amplification;
           amplification << std::setprecision(17) << result.amplification();
-          const std::string why =
-            run_script("vault_picture.py",
-                       {dir.path() + "blocks.vtu",
-                        dir.path() + "vault.png",
-                        xml_escape(context.summary.at("analysis").as_string()),
-                        "--amplification",
-                        amplification.str()});
+          const std::string why = run_script(
+            "vault_picture.py",
+            {dir.path() + "blocks.vtu",
+             dir.path() + "vault.png",
+             xml_escape(context.summary.at("analysis").get<std::string>()),
+             "--amplification",
+             amplification.str()},
+            {dir.path() + "vault.png"});
           if (why.empty())
             dir.file("vault.png");
           else

@@ -3,9 +3,9 @@
  * Postprocessor `vault pvd`: vault.pvd.
  */
 #include <masonry/core/output_directory.h>
+#include <masonry/core/output_file.h>
 #include <masonry/rigid_blocks/postprocess/interface.h>
 
-#include <fstream>
 
 namespace masonry
 {
@@ -32,13 +32,14 @@ namespace masonry
         {
           if (!result.is_root())
             return;
-          std::ofstream pvd(context.output.file("vault.pvd"));
+          OutputFile pvd(context.output.file("vault.pvd"));
           pvd << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" "
                  "version=\"0.1\">\n<Collection>\n"
               << "<DataSet timestep=\"0\" part=\"0\" file=\"blocks.vtu\" "
                  "name=\"blocks\"/>\n"
               << "<DataSet timestep=\"0\" part=\"1\" file=\"interfaces.vtu\" "
                  "name=\"interfaces\"/>\n</Collection>\n</VTKFile>\n";
+          pvd.close();
         }
       };
     } // namespace postprocess

@@ -28,8 +28,10 @@
  *   void execute(const Result &result, masonry::RunContext &context) override
  *   {
  *     if (!result.is_root()) return;
- *     std::ofstream out(context.output.file("my_output.csv"));
+ *     // written under a temporary name, renamed by close() when whole
+ *     masonry::OutputFile out(context.output.file("my_output.csv"));
  *     ...
+ *     out.close(); // throws "cannot write '...': No space left on device"
  *   }
  * };
  * MASONRY_REGISTER_RIGID_BLOCK_POSTPROCESSOR(MyOutput, "my output", "...")
