@@ -1,6 +1,10 @@
-// The "barrel vault" geometry model: the default (Bothwell: pointed, span
-// 6.1 m, rise 3.8 m, length 16.8 m), middle-surface area = arc length x
-// length, skew, edge labels, normal orientation, common parameters.
+// The "barrel vault" geometry model: the default (Bothwell's numbers as the
+// middle surface: pointed, span 6.1 m, rise 3.8 m, length 16.8 m),
+// middle-surface area = arc length x length, skew, edge labels, normal
+// orientation, common parameters; `Span and rise of = intrados' and
+// `extrados' (the paper's Bothwell vault: interior span 6.1 m, rise 3.8 m,
+// thickness 0.36 m) against the circles of those surfaces, computed here
+// from the pointed and circular arch formulas alone.
 
 #include "geometry_common.h"
 
@@ -108,6 +112,93 @@ main()
                       1e-15,
                       "thickness expression 0.3 + 0.1 z at the crown");
     test::check_close(vault->density(), 2000, 0, "density");
+  }
+  {
+    // the paper's vault: the intrados offset of the middle surface by half
+    // the thickness along the normal must be the pointed arch of span 6.1
+    // and rise 3.8 (centres (+-c, 0), radius R), springing at x = -+3.05,
+    // z = 0; likewise the extrados with `extrados'
+    const double s = 6.1, r = 3.8, t = 0.36;
+    const double c = (r * r - s * s / 4) / s, R = (s * s / 4 + r * r) / s;
+    for (const std::string surface : {"intrados", "extrados"})
+      {
+        const double side  = surface == "intrados" ? -0.5 : 0.5;
+        const auto   vault = test::create("barrel vault",
+                                        "set Span and rise of = " + surface,
+                                        "set Thickness = 0.36");
+        double       err_r = 0, err_z = 0;
+        for (unsigned int k = 0; k < 2; ++k)
+          for (unsigned int i = 0; i <= 10; ++i)
+            for (unsigned int j = 0; j <= 4; ++j)
+              {
+                const dealii::Point<2> uv(i / 10., j / 4.);
+                const auto            &patch = vault->patches()[k];
+                const auto x = patch.point(uv) + side * t * patch.normal(uv);
+                err_r =
+                  std::max(err_r,
+                           std::abs(std::hypot(x[0] - (k == 0 ? c : -c), x[2]) -
+                                    R));
+                if (i == 0)
+                  err_z = std::max(
+                    {err_z, std::abs(x[2]), std::abs(std::abs(x[0]) - s / 2)});
+              }
+        test::check(err_r < 1e-12,
+                    "paper's vault, " + surface +
+                      " given: that surface on the two circles of span 6.1, "
+                      "rise 3.8");
+        test::check(err_z < 1e-12,
+                    "paper's vault, " + surface +
+                      " given: it springs at x = -+3.05 m, z = 0");
+        // the middle surface: radius R -+ t/2 about the same centres, so
+        // span 6.1 -+ 0.36 and rise sqrt((R -+ t/2)^2 - c^2)
+        const double Rm  = R - 2 * side * t / 2;
+        const auto crown = vault->patches()[0].point(dealii::Point<2>(1, 0.5));
+        std::cout << "paper's vault, " << surface << " given: middle surface "
+                  << "span " << 2 * vault->patches()[1].point({0, 0})[0]
+                  << " m, rise " << crown[2] << " m" << std::endl;
+        test::check_close(2 * vault->patches()[1].point({0, 0})[0],
+                          s - 2 * side * t,
+                          1e-12,
+                          "middle surface span");
+        test::check_close(crown[2],
+                          std::sqrt(Rm * Rm - c * c),
+                          1e-12,
+                          "middle surface rise");
+      }
+  }
+  {
+    // a segmental barrel whose intrados is given: the intrados circle
+    // through (-+2, 0) and (0, 1.2) has R = (4 + 1.44)/2.4 and its centre
+    // at (0, 1.2 - R); radial springing joints, so the middle surface
+    // springs above z = 0
+    const double t = 0.3, R = (2. * 2. + 1.2 * 1.2) / (2 * 1.2), zc = 1.2 - R;
+    const auto   vault =
+      test::create("barrel vault",
+                   "set Shape = circular\nset Span = 4\nset Rise = 1.2\n"
+                   "set Span and rise of = intrados\nset Length = 2",
+                   "set Thickness = 0.3");
+    double err_r = 0;
+    for (unsigned int k = 0; k < 2; ++k)
+      for (unsigned int i = 0; i <= 10; ++i)
+        {
+          const dealii::Point<2> uv(i / 10., 0.5);
+          const auto            &patch = vault->patches()[k];
+          const auto x = patch.point(uv) - 0.5 * t * patch.normal(uv);
+          err_r = std::max(err_r, std::abs(std::hypot(x[0], x[2] - zc) - R));
+        }
+    test::check(err_r < 1e-12, "segmental, intrados given: on its circle");
+    const auto &east = vault->patches()[1];
+    const auto  x0   = east.point({0, 0.5}) - 0.5 * t * east.normal({0, 0.5});
+    const auto  x1   = east.point({1, 0.5}) - 0.5 * t * east.normal({1, 0.5});
+    test::check(std::abs(x0[0] - 2) < 1e-12 && std::abs(x0[2]) < 1e-12 &&
+                  std::abs(x1[0]) < 1e-12 && std::abs(x1[2] - 1.2) < 1e-12,
+                "segmental, intrados given: springs at (2, 0), crown at "
+                "(0, 1.2)");
+    test::check_close(east.point({0, 0.5})[2],
+                      -zc * t / 2 / R,
+                      1e-12,
+                      "segmental: the middle surface springs at "
+                      "-zc (t/2)/R above z = 0");
   }
   return test::failures();
 }

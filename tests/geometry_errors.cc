@@ -37,6 +37,21 @@ main()
          "barrel vault",
          "set Shape = circular\nset Span = 6\nset Rise = 3.5",
          "Geometry model/Barrel vault/Rise");
+  expect("intrados with a varying thickness",
+         "barrel vault",
+         "set Span and rise of = intrados",
+         "Geometry model/Barrel vault/Span and rise of",
+         "set Thickness = 0.3 + 0.01*z");
+  expect("extrados thinner than the thickness (circular)",
+         "arch",
+         "set Span = 1\nset Rise = 0.5\nset Span and rise of = extrados",
+         "Geometry model/Arch/Span and rise of",
+         "set Thickness = 0.6");
+  expect("extrados thinner than the thickness (pointed)",
+         "barrel vault",
+         "set Span = 0.6\nset Rise = 0.8\nset Span and rise of = extrados",
+         "Geometry model/Barrel vault/Span and rise of",
+         "set Thickness = 0.35");
   expect("negative length",
          "barrel vault",
          "set Length = -1",

@@ -61,11 +61,14 @@ main(int argc, char **argv)
   std::cout << "default: " << joined(files(all)) << "\n";
   std::set<std::string> expected = always;
   // settlement: no thrust line (moving supports); Write picture = false
+  // (no vault.png, crack_map.png)
   for (const auto *f : {"interface_forces.csv",
                         "blocks.csv",
                         "blocks.vtu",
                         "interfaces.vtu",
-                        "vault.pvd"})
+                        "vault.pvd",
+                        "crack_map.csv",
+                        "report.html"})
     expected.insert(f);
   check(files(all) == expected, "default list writes every output");
   check(all.contains("cracks") && all.contains("support_reactions") &&
@@ -85,7 +88,7 @@ main(int argc, char **argv)
         "no interface_forces.csv");
   check(!some.contains("cracks") && !some.contains("n_cracks") &&
           !some.contains("support_reactions") &&
-          !some.contains("seconds_picture"),
+          !some.contains("seconds_picture") && !some.contains("seconds_report"),
         "no summary entries of unlisted postprocessors");
   for (const auto *f : {"blocks.csv", "blocks.vtu", "interfaces.vtu"})
     check(testing::read_file(std::string("results/subset/") + f) ==

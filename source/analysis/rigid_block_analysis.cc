@@ -28,6 +28,18 @@ namespace masonry
 {
   namespace analysis
   {
+    namespace
+    {
+      using Clock = std::chrono::steady_clock;
+
+      /** Seconds since @p start. */
+      double
+      seconds_since(const Clock::time_point &start)
+      {
+        return std::chrono::duration<double>(Clock::now() - start).count();
+      }
+    } // namespace
+
     double
     RigidBlockAnalysis::thread_cpu_seconds()
     {
@@ -49,11 +61,52 @@ namespace masonry
     void
     RigidBlockAnalysis::report(RunContext        &context,
                                const std::string &status,
-                               const std::string &explanation)
+                               const std::string &explanation) const
     {
       context.summary["status"]      = status;
       context.summary["explanation"] = explanation;
       context.pcout << "Result: " << status << " — " << explanation << "\n";
+      if (quiet || !model)
+        return;
+      // no solution: the blocks at rest, no contact forces; the outputs
+      // that can say something without one (the report page) run
+      const auto                               start = Clock::now();
+      const rigid_blocks::Motion               rest(model->blocks().size());
+      const std::vector<std::array<double, 3>> no_forces;
+      const rigid_blocks::SupportMotion ground = prescribed_support_motion();
+      bool                              moves  = false;
+      for (const auto &i : model->interfaces())
+        if (i.second == rigid_blocks::Interface::support)
+          for (const auto &c : i.points)
+            moves = moves || ground(c.position, i.support_label).norm() > 0;
+      const rigid_blocks::postprocess::Result result(*model,
+                                                     rest,
+                                                     ground,
+                                                     no_forces,
+                                                     output_options,
+                                                     moves,
+                                                     context.mpi_communicator,
+                                                     false);
+      bool                                    any = false;
+      for (const auto &[name, postprocessor] : postprocessors)
+        if (postprocessor->writes_without_solution())
+          {
+            postprocessor->execute(result, context);
+            any = true;
+          }
+      if (any)
+        {
+          result.render_pictures();
+          context.summary["seconds_output"] = seconds_since(start);
+        }
+    }
+
+    rigid_blocks::SupportMotion
+    RigidBlockAnalysis::prescribed_support_motion() const
+    {
+      return [](const dealii::Point<3> &, const std::string &) {
+        return dealii::Tensor<1, 3>();
+      };
     }
 
     double
@@ -74,7 +127,7 @@ namespace masonry
       const std::vector<std::array<double, 3>> &forces,
       RunContext                               &context) const
     {
-      const auto start = std::chrono::steady_clock::now();
+      const auto                              start = Clock::now();
       const rigid_blocks::postprocess::Result result(*model,
                                                      motion,
                                                      support_motion,
@@ -84,10 +137,12 @@ namespace masonry
                                                      context.mpi_communicator);
       for (const auto &[name, postprocessor] : postprocessors)
         postprocessor->execute(result, context);
+      // the pictures the postprocessors queued, in one Python process
+      const double seconds_picture = result.render_pictures();
+      if (seconds_picture > 0)
+        context.summary["seconds_picture"] = seconds_picture;
       // what writing the results costs (not part of the analysis' timings)
-      context.summary["seconds_output"] =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
-          .count();
+      context.summary["seconds_output"] = seconds_since(start);
     }
 
     void
@@ -188,8 +243,11 @@ namespace masonry
       prm.declare_entry("Write picture",
                         "true",
                         dealii::Patterns::Bool(),
-                        "Render the deformed vault to vault.png with "
-                        "matplotlib (/usr/bin/python3).");
+                        "Render the pictures vault.png (the deformed "
+                        "vault) and crack_map.png (the crack map) with "
+                        "matplotlib (/usr/bin/python3), in one Python "
+                        "process per run; report.html is written either "
+                        "way (`List of postprocessors').");
     }
 
     void

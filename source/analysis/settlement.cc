@@ -206,6 +206,12 @@ namespace masonry
                       context);
       }
 
+      rigid_blocks::SupportMotion
+      prescribed_support_motion() const override
+      {
+        return settlement_function();
+      }
+
     private:
       /**
        * The direct check (`Check support motion`) of the current model,

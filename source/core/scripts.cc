@@ -1,16 +1,12 @@
+#include <masonry/core/json.h>
 #include <masonry/core/output_file.h>
 #include <masonry/core/scripts.h>
-
-#include <deal.II/base/exceptions.h>
 
 #include <cstdio>
 #include <cstdlib>
 #include <dlfcn.h>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <system_error>
-#include <unistd.h>
 
 namespace masonry
 {
@@ -71,97 +67,136 @@ namespace masonry
 
   namespace
   {
-    /** The last non-empty line of @p text. */
+    /** @p text in single quotes for the shell, a quote inside as '\''. */
     std::string
-    last_line(const std::string &text)
+    quoted(const std::string &text)
     {
-      std::string line;
-      std::size_t end = text.find_last_not_of("\n ");
-      if (end == std::string::npos)
-        return "";
-      const std::size_t start = text.rfind('\n', end);
-      line =
-        text.substr(start == std::string::npos ? 0 : start + 1,
-                    end + 1 - (start == std::string::npos ? 0 : start + 1));
-      return line;
-    }
-
-    /** The system's reason if @p error is a failed write, else "". */
-    std::string
-    write_failure(const std::string &error)
-    {
-      for (const char *reason : {"No space left on device",
-                                 "File too large",
-                                 "Disk quota exceeded",
-                                 "Input/output error"})
-        if (error.find(reason) != std::string::npos)
-          return reason;
-      return "";
+      std::string q = "'";
+      for (const char c : text)
+        q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+      return q + "'";
     }
   } // namespace
+
+  std::vector<std::string>
+  run_scripts(const std::vector<ScriptJob> &jobs)
+  {
+    std::vector<std::string> why(jobs.size());
+    if (jobs.empty())
+      return why;
+    const std::string python = "/usr/bin/python3";
+    const std::string runner = find_script("masonry_scripts.py");
+    std::error_code   error;
+    Json              list = Json::array();
+    std::vector<int>  numbers; // job of each entry of list
+    for (unsigned int j = 0; j < jobs.size(); ++j)
+      {
+        const std::string script = find_script(jobs[j].script);
+        if (script.empty())
+          why[j] = jobs[j].script + " not found";
+        else if (runner.empty())
+          why[j] = "masonry_scripts.py not found";
+        else if (!std::filesystem::exists(python, error))
+          why[j] = python + " not found";
+        if (!why[j].empty())
+          continue;
+        Json job       = Json::object();
+        job["script"]  = script;
+        Json arguments = Json::array();
+        for (const auto &a : jobs[j].arguments)
+          arguments.push_back(a);
+        job["arguments"] = arguments;
+        job["output"]    = jobs[j].output;
+        list.push_back(job);
+        numbers.push_back(j);
+      }
+    if (numbers.empty())
+      return why;
+    // the runner's lines "masonry-job N ok|error CAUSE"; anything else on
+    // its output (Python's own complaints) is kept for a runner that fails
+    const std::string command =
+      python + " " + quoted(runner) + " " + quoted(list.dump(0)) + " 2>&1";
+    std::vector<bool> answered(numbers.size(), false);
+    std::string       last_line;
+    FILE             *pipe = popen(command.c_str(), "r");
+    if (pipe == nullptr)
+      {
+        for (const int j : numbers)
+          why[j] = "cannot start " + python;
+        return why;
+      }
+    std::string line;
+    char        buffer[4096];
+    while (std::fgets(buffer, sizeof buffer, pipe) != nullptr)
+      {
+        line += buffer;
+        if (line.empty() || line.back() != '\n')
+          continue;
+        line.pop_back();
+        const std::string prefix = "masonry-job ";
+        unsigned int      n      = 0;
+        std::size_t       end    = 0;
+        if (line.rfind(prefix, 0) == 0 &&
+            std::sscanf(line.c_str() + prefix.size(), "%u", &n) == 1 &&
+            n < numbers.size() &&
+            (end = line.find(' ', prefix.size())) != std::string::npos)
+          {
+            const std::string verdict = line.substr(end + 1);
+            answered[n]               = true;
+            if (verdict != "ok")
+              why[numbers[n]] =
+                jobs[numbers[n]].script + " failed: " +
+                (verdict.rfind("error ", 0) == 0 ? verdict.substr(6) : verdict);
+          }
+        else if (!line.empty())
+          last_line = line;
+        line.clear();
+      }
+    const int status = pclose(pipe);
+    // a picture that could not be written ends the run, like any file
+    const std::string write_failed = "failed: write failed: ";
+    for (const int j : numbers)
+      {
+        const auto at = why[j].find(write_failed);
+        if (at != std::string::npos)
+          AssertThrow(false,
+                      dealii::ExcMessage(
+                        write_error(jobs[j].output.empty() ? jobs[j].script :
+                                                             jobs[j].output,
+                                    why[j].substr(at + write_failed.size()))));
+      }
+    for (unsigned int n = 0; n < numbers.size(); ++n)
+      if (!answered[n])
+        why[numbers[n]] =
+          jobs[numbers[n]].script + " not run: the Python process stopped" +
+          (last_line.empty() ? " (exit status " + std::to_string(status) + ")" :
+                               " (" + last_line + ")");
+    return why;
+  }
 
   std::string
   run_script(const std::string              &name,
              const std::vector<std::string> &arguments,
              const std::vector<std::string> &outputs)
   {
-    const std::string script = find_script(name);
-    const std::string python = "/usr/bin/python3";
-    if (script.empty())
-      return name + " not found";
-    std::error_code error;
-    if (!std::filesystem::exists(python, error))
-      return python + " not found";
-    // each argument in single quotes, a quote inside as '\''
-    auto quoted = [](const std::string &text) {
-      std::string q = "'";
-      for (const char c : text)
-        q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-      return q + "'";
-    };
-    // the script's error output, to tell a missing module from a full disk
-    char      errors_name[] = "/tmp/masonry-script-XXXXXX";
-    const int errors_file   = ::mkstemp(errors_name);
-    if (errors_file >= 0)
-      ::close(errors_file);
-    std::string command = python + " " + quoted(script);
-    for (const auto &argument : arguments)
-      command += " " + quoted(argument);
-    command += " >/dev/null 2>" +
-               (errors_file >= 0 ? quoted(errors_name) : std::string("&1"));
-    const int   status = std::system(command.c_str());
-    std::string errors;
-    if (errors_file >= 0)
+    std::string why;
+    try
       {
-        std::ifstream     in(errors_name);
-        std::stringstream text;
-        text << in.rdbuf();
-        errors = text.str();
-        std::remove(errors_name);
+        why = run_scripts({ScriptJob{name, arguments, ""}}).front();
       }
-    if (status == 0)
-      return "";
-    for (const auto &output : outputs)
-      std::filesystem::remove(output, error);
-    const std::string reason = write_failure(errors);
-    if (!reason.empty())
-      AssertThrow(false,
-                  dealii::ExcMessage(
-                    write_error(outputs.empty() ?
-                                  "(the output of " + name + ")" :
-                                  outputs.front(),
-                                reason)));
-    const std::string cause   = last_line(errors);
-    const std::string missing = "No module named '";
-    const auto        m       = cause.find(missing);
-    if (m != std::string::npos)
+    catch (...)
       {
-        const std::string module =
-          cause.substr(m + missing.size(),
-                       cause.find('\'', m + missing.size()) - m -
-                         missing.size());
-        return name + " needs python3-" + module.substr(0, module.find('.'));
+        std::error_code error;
+        for (const auto &output : outputs)
+          std::filesystem::remove(output, error);
+        throw;
       }
-    return name + " failed" + (cause.empty() ? "" : " (" + cause + ")");
+    if (!why.empty())
+      {
+        std::error_code error;
+        for (const auto &output : outputs)
+          std::filesystem::remove(output, error);
+      }
+    return why;
   }
 } // namespace masonry

@@ -8,8 +8,9 @@ namespace masonry
   {
     /**
      * A strip of an arch: the profile of ArchProfile (span along x from
-     * -Span/2 to +Span/2, springings at z = 0, crown at (0, Rise)) extruded
-     * over the depth y in [0, Depth].
+     * -Span/2 to +Span/2, springings at z = 0, crown at (0, Rise), for the
+     * middle surface, the intrados or the extrados: `Span and rise of`,
+     * make_middle_profile()) extruded over the depth y in [0, Depth].
      *
      * Two patches, "left half" (x <= 0) and "right half" (x >= 0), so that
      * the crown of a pointed arch is a patch edge. For each: u from the
@@ -21,7 +22,7 @@ namespace masonry
     class Arch : public Interface
     {
     public:
-      /** Declare `Shape`, `Span`, `Rise`, `Depth`. */
+      /** Declare `Shape`, `Span`, `Rise`, `Span and rise of`, `Depth`. */
       static void
       declare_parameters(dealii::ParameterHandler &prm)
       {
@@ -35,15 +36,17 @@ namespace masonry
         prm.declare_entry("Span",
                           "4",
                           dealii::Patterns::Double(),
-                          "Clear span between the springings of the middle "
-                          "surface (m), > 0; the springings are at "
-                          "x = -Span/2 and x = +Span/2, z = 0.");
+                          "Span (m), > 0, of the surface `Span and rise of' "
+                          "names (the middle surface by default): it "
+                          "springs at x = -Span/2 and x = +Span/2, z = 0.");
         prm.declare_entry("Rise",
                           "2",
                           dealii::Patterns::Double(),
-                          "Height of the crown of the middle surface above "
-                          "the springings (m): 0 < Rise <= Span/2 for a "
-                          "circular arch, Rise > Span/2 for a pointed one.");
+                          "Crown height (m) of the surface `Span and rise "
+                          "of' names above its springings: 0 < Rise <= "
+                          "Span/2 for a circular arch, Rise > Span/2 for a "
+                          "pointed one.");
+        declare_reference_surface(prm);
         prm.declare_entry("Depth",
                           "1",
                           dealii::Patterns::Double(),
@@ -55,10 +58,16 @@ namespace masonry
       void
       parse_parameters(dealii::ParameterHandler &prm) override
       {
+        const ReferenceSurface reference =
+          parse_reference_surface(prm.get("Span and rise of"));
         const ArchProfile profile =
-          make_arch_profile(parse_arch_shape(prm.get("Shape")),
-                            prm.get_double("Span"),
-                            prm.get_double("Rise"));
+          make_middle_profile(parse_arch_shape(prm.get("Shape")),
+                              prm.get_double("Span"),
+                              prm.get_double("Rise"),
+                              reference,
+                              reference == ReferenceSurface::middle ?
+                                0. :
+                                constant_thickness("Span and rise of"));
         const double depth = prm.get_double("Depth");
         AssertThrow(depth > 0, ExcParameter("Depth", "must be positive (m)."));
         set_patches(
@@ -78,7 +87,9 @@ MASONRY_REGISTER_GEOMETRY_MODEL(
   masonry::geometry::Arch,
   "arch",
   "A strip of a circular (semicircular or segmental) or pointed "
-  "(two-centred) arch of given Span, Rise and Depth (m): span along x from "
+  "(two-centred) arch of given Span, Rise (of the middle surface, the "
+  "intrados or the extrados: `Span and rise of') and Depth (m): span along "
+  "x from "
   "-Span/2 to Span/2, springings at z = 0, depth along y from 0 to Depth. "
   "Two exact rational patches, `left half' and `right half', with u from "
   "the springing (u=0) to the crown (u=1) and v across the depth. Edge "

@@ -20,13 +20,20 @@ namespace masonry
      * (west) / "springing right" (east), "crown", "gable front",
      * "gable back".
      *
-     * The default is the vault of Bothwell castle (pointed, span 6.1 m,
-     * rise 3.8 m, length 16.8 m).
+     * `Span` and `Rise` are those of the middle surface, the intrados or
+     * the extrados (`Span and rise of`, make_middle_profile()). The
+     * defaults are the numbers of the Bothwell Parish Church vault
+     * (pointed, span 6.1 m, rise 3.8 m, length 16.8 m), but taken as the
+     * middle surface's; the paper gives them for the intrados
+     * (prm/examples/bothwell-*.prm set `Span and rise of = intrados`).
      */
     class BarrelVault : public Interface
     {
     public:
-      /** Declare `Shape`, `Span`, `Rise`, `Length`, `Skew angle`. */
+      /**
+       * Declare `Shape`, `Span`, `Rise`, `Span and rise of`, `Length`,
+       * `Skew angle`.
+       */
       static void
       declare_parameters(dealii::ParameterHandler &prm)
       {
@@ -40,14 +47,16 @@ namespace masonry
         prm.declare_entry("Span",
                           "6.1",
                           dealii::Patterns::Double(),
-                          "Span of the middle surface (m), > 0: springings "
-                          "at x = -Span/2 and x = +Span/2, z = 0.");
+                          "Span (m), > 0, of the surface `Span and rise of' "
+                          "names (the middle surface by default): it "
+                          "springs at x = -Span/2 and x = +Span/2, z = 0.");
         prm.declare_entry("Rise",
                           "3.8",
                           dealii::Patterns::Double(),
-                          "Crown height of the middle surface above the "
-                          "springings (m): <= Span/2 for circular, "
-                          "> Span/2 for pointed.");
+                          "Crown height (m) of the surface `Span and rise "
+                          "of' names above its springings: <= Span/2 for "
+                          "circular, > Span/2 for pointed.");
+        declare_reference_surface(prm);
         prm.declare_entry("Length",
                           "16.8",
                           dealii::Patterns::Double(),
@@ -65,10 +74,16 @@ namespace masonry
       void
       parse_parameters(dealii::ParameterHandler &prm) override
       {
+        const ReferenceSurface reference =
+          parse_reference_surface(prm.get("Span and rise of"));
         const ArchProfile profile =
-          make_arch_profile(parse_arch_shape(prm.get("Shape")),
-                            prm.get_double("Span"),
-                            prm.get_double("Rise"));
+          make_middle_profile(parse_arch_shape(prm.get("Shape")),
+                              prm.get_double("Span"),
+                              prm.get_double("Rise"),
+                              reference,
+                              reference == ReferenceSurface::middle ?
+                                0. :
+                                constant_thickness("Span and rise of"));
         const double length = prm.get_double("Length");
         AssertThrow(length > 0,
                     ExcParameter("Length", "must be positive (m)."));
@@ -91,12 +106,15 @@ namespace masonry
 MASONRY_REGISTER_GEOMETRY_MODEL(
   masonry::geometry::BarrelVault,
   "barrel vault",
-  "A circular or pointed barrel vault of given Span and Rise (m), extruded "
+  "A circular or pointed barrel vault of given Span and Rise (m) of its "
+  "middle surface, intrados or extrados (`Span and rise of'), extruded "
   "along y over Length (m), optionally skewed by Skew angle (degrees: "
   "x += y tan(angle)). Span along x from -Span/2 to Span/2, springings at "
   "z = 0. Two exact rational patches, `west half' and `east half', meeting "
   "at the crown; u from the springing (u=0) to the crown (u=1), v from "
   "y=0 to y=Length. Edge labels: `springing left' / `springing right' "
   "(u=0), `crown' (u=1), `gable front' (y=0), `gable back' (y=Length). "
-  "The defaults are the vault of Bothwell castle (pointed, span 6.1 m, "
-  "rise 3.8 m, length 16.8 m).")
+  "The defaults are the numbers of the Bothwell Parish Church vault "
+  "(pointed, span 6.1 m, rise 3.8 m, length 16.8 m) taken as the middle "
+  "surface's; the paper's vault has them at the intrados (`Span and rise "
+  "of = intrados', as in prm/examples/bothwell-*.prm).")

@@ -100,6 +100,35 @@ namespace masonry
       return t;
     }
 
+    double
+    Interface::constant_thickness(const std::string &entry) const
+    {
+      AssertThrow(thickness_function,
+                  dealii::ExcMessage(
+                    "geometry::Interface::constant_thickness() "
+                    "called before parse_common_parameters()."));
+      const double t = thickness_function->value(dealii::Point<3>());
+      for (const dealii::Point<3> x : {dealii::Point<3>(1, 2, 3),
+                                       dealii::Point<3>(-100, 37, 5),
+                                       dealii::Point<3>(61, -100, 100),
+                                       dealii::Point<3>(-13, 100, -100),
+                                       dealii::Point<3>(100, 0.5, -0.25)})
+        {
+          const double other = thickness_function->value(x);
+          AssertThrow(other == t ||
+                        (std::isfinite(other) && std::isfinite(t) &&
+                         std::abs(other - t) <= 1e-12 * std::abs(t)),
+                      ExcParameter(entry,
+                                   "needs a constant Thickness (a number of "
+                                   "m), not '" +
+                                     thickness_expression +
+                                     "': give the span and rise of the "
+                                     "middle surface for a varying "
+                                     "thickness."));
+        }
+      return unscaled_thickness(dealii::Point<3>());
+    }
+
     void
     Interface::set_thickness_factor(const double f)
     {

@@ -513,6 +513,8 @@ namespace masonry
       Interface interface;
       interface.first              = first;
       interface.second             = second;
+      interface.patch              = p;
+      interface.edge               = uv;
       const unsigned int     n     = options.n_stations;
       const geometry::Patch &patch = geom.patches()[p];
       std::vector<Station>   stations;

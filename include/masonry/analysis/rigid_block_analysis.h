@@ -237,12 +237,23 @@ namespace masonry
 
       /**
        * End a run without an optimum: set `status` and `explanation` in the
-       * summary and print them.
+       * summary, print them, and run the postprocessors that write without
+       * a solution (the `report' page: the status, the explanation and
+       * whatever diagnostics the summary holds, on the undeformed blocks
+       * with the prescribed support motion).
        */
-      static void
+      void
       report(RunContext        &context,
              const std::string &status,
-             const std::string &explanation);
+             const std::string &explanation) const;
+
+      /**
+       * The prescribed motion of the supports (m) for the outputs of a run
+       * without an optimum: none by default; `settlement' gives its
+       * settlement.
+       */
+      virtual rigid_blocks::SupportMotion
+      prescribed_support_motion() const;
 
       /**
        * The factor that makes the largest centroid translation of the

@@ -49,21 +49,47 @@ namespace masonry
   find_script(const std::string &name);
 
   /**
-   * Run the installed script @p name (find_script()) with `/usr/bin/python3`
-   * and @p arguments (each passed as one argument), its output discarded.
-   * Returns "" if it ran and exited with 0, otherwise why not, in the words
-   * of the cause: "NAME not found", "/usr/bin/python3 not found", "NAME
-   * needs python3-matplotlib" (a module that is not installed, with its
-   * Debian package), or "NAME failed (the script's last error line)".
+   * One script to run: the installed script @p script (a name for
+   * find_script()) with @p arguments, each passed as one argument. If the
+   * script writes one file, @p output is its full path and the argument
+   * "{output}" stands for it: the script then writes a temporary name in
+   * the same directory, renamed to @p output only when the script
+   * succeeded (a picture is whole or absent).
+   */
+  struct ScriptJob
+  {
+    /** The script's name, e.g. "vault_picture.py". */
+    std::string script;
+    /** Its arguments ("{output}": the temporary name of @p output). */
+    std::vector<std::string> arguments;
+    /** The file it writes, or "". */
+    std::string output;
+  };
+
+  /**
+   * Run @p jobs in one `/usr/bin/python3` process (the installed runner
+   * masonry_scripts.py runs each script as `__main__`, so Python starts
+   * and matplotlib is imported once), in order. Returns per job "" if it
+   * ran and exited with 0, otherwise why not, in one line: "NAME not
+   * found", "/usr/bin/python3 not found", or the real cause the runner
+   * found (a missing Debian package, a full disk, the script's exception
+   * and line). The caller names the files a script wrote
+   * (OutputDirectory::file()) only on success: a file named but not
+   * written makes the run `failed'.
    *
-   * @p outputs are the files the script writes: if it fails, they are
-   * removed, so that a picture is whole or absent. If it failed because a
-   * file could not be written (a full disk, a file-size limit, an I/O
-   * error), that is no reason to go on: run_script() throws an ExcMessage
-   * "cannot write 'FILE': REASON" naming the first of @p outputs.
-   *
-   * The caller names the files the script wrote (OutputDirectory::file())
-   * only on success: a file named but not written makes the run `failed'.
+   * A script that failed because a file could not be written (a full
+   * disk, a file-size limit, an I/O error) is no reason to go on:
+   * run_scripts() then throws an ExcMessage "cannot write 'FILE': REASON"
+   * naming the job's output (or script).
+   */
+  std::vector<std::string>
+  run_scripts(const std::vector<ScriptJob> &jobs);
+
+  /**
+   * Run the installed script @p name with @p arguments: run_scripts() of
+   * one job. @p outputs are the files it writes by names of its own: they
+   * are removed if it fails, so that they are whole or absent. Returns ""
+   * or why it failed.
    */
   std::string
   run_script(const std::string              &name,

@@ -101,6 +101,17 @@ namespace masonry
 
     protected:
       /**
+       * The `Thickness' as one number (m), for a model that needs it before
+       * it has a surface (the offset between the surface whose span and
+       * rise are given and the middle surface): the expression evaluated at
+       * points spread over ±100 m, which must all agree. Throws an
+       * ExcParameter naming @p entry (the model's entry that needs it) if
+       * they do not, and naming `Thickness' if the value is not positive.
+       */
+      double
+      constant_thickness(const std::string &entry) const;
+
+      /**
        * Store the patches and evaluate the thickness on a 5x5 grid of
        * parameter points of every patch (so that a non-positive thickness
        * is reported while parsing, not later).

@@ -88,6 +88,14 @@ namespace masonry
       double area;
       /** Centre of the interface, m. */
       dealii::Point<3> centre;
+      /** The patch of block `first`. */
+      unsigned int patch = 0;
+      /**
+       * The interface's edge in the unit parameter square of that patch,
+       * from its first station to its last (for pictures drawn in
+       * parameter space: the crack map).
+       */
+      std::array<dealii::Point<2>, 2> edge;
 
       /** Marker for the ground as second body. */
       static constexpr unsigned int support = static_cast<unsigned int>(-1);

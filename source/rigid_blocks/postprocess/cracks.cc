@@ -3,7 +3,7 @@
  * Postprocessor `cracks`: the list of interfaces that open or rotate.
  */
 #include <masonry/core/json.h>
-#include <masonry/rigid_blocks/postprocess/interface.h>
+#include <masonry/rigid_blocks/postprocess/crack_map.h>
 
 namespace masonry
 {
@@ -14,7 +14,7 @@ namespace masonry
       /**
        * Summary entries `n_cracks`, `n_hinges` and `cracks` (every interface
        * whose jump exceeds Result::tolerance(), classified as hinge,
-       * separation or slip) and one screen line.
+       * separation or slip by interface_state()) and one screen line.
        */
       class Cracks : public Interface
       {
@@ -27,38 +27,15 @@ namespace masonry
         execute(const Result &result, RunContext &context) override
         {
           const auto  &interfaces = result.model().interfaces();
-          const auto  &motion     = result.motion();
-          const double tolerance  = result.tolerance();
           Json         cracks     = Json::array();
           unsigned int n_hinges   = 0;
           for (unsigned int k = 0; k < interfaces.size(); ++k)
             {
-              const rigid_blocks::Interface &i = interfaces[k];
-              double max_opening = 0, min_opening = 0, max_jump = 0;
-              bool   first = true;
-              for (const auto &c : i.points)
-                {
-                  const auto   j       = result.jump(i, c);
-                  const double opening = j * c.normal;
-                  max_opening =
-                    first ? opening : std::max(max_opening, opening);
-                  min_opening =
-                    first ? opening : std::min(min_opening, opening);
-                  max_jump = std::max(max_jump, j.norm());
-                  first    = false;
-                }
-              if (max_jump <= tolerance)
+              const rigid_blocks::Interface &i     = interfaces[k];
+              const InterfaceState           state = interface_state(result, i);
+              if (!state.is_crack())
                 continue;
-              const dealii::Tensor<1, 3> omega =
-                (i.second == rigid_blocks::Interface::support ?
-                   dealii::Tensor<1, 3>() :
-                   motion.rotation[i.second]) -
-                motion.rotation[i.first];
-              const std::string type =
-                min_opening <= tolerance ?
-                  (max_opening > tolerance ? "hinge" : "slip") :
-                  "separation";
-              if (type == "hinge")
+              if (state.type == "hinge")
                 ++n_hinges;
               Json crack           = Json::object();
               crack["interface"]   = k;
@@ -70,9 +47,9 @@ namespace masonry
               for (unsigned int d = 0; d < 3; ++d)
                 position.push_back(i.centre[d]);
               crack["position"]          = position;
-              crack["type"]              = type;
-              crack["max_opening"]       = max_opening;
-              crack["relative_rotation"] = omega.norm();
+              crack["type"]              = state.type;
+              crack["max_opening"]       = state.max_opening;
+              crack["relative_rotation"] = state.relative_rotation;
               cracks.push_back(crack);
             }
           context.summary["n_cracks"] = cracks.size();

@@ -3,6 +3,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <algorithm>
+#include <chrono>
 
 namespace masonry
 {
@@ -16,7 +17,8 @@ namespace masonry
                      const std::vector<std::array<double, 3>> &forces,
                      const OutputOptions                      &options,
                      const bool                                supports_move,
-                     const MPI_Comm                            mpi_communicator)
+                     const MPI_Comm                            mpi_communicator,
+                     const bool                                has_solution)
         : block_model(model)
         , block_motion(motion)
         , ground(support_motion)
@@ -25,6 +27,7 @@ namespace masonry
         , moving_supports(supports_move)
         , mpi_communicator(mpi_communicator)
         , root(dealii::Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+        , solution(has_solution)
       {
         const auto &interfaces = model.interfaces();
         // the scales of "zero" jumps and of the amplification: the largest
@@ -72,12 +75,66 @@ namespace masonry
         return second - first;
       }
 
+      dealii::Tensor<1, 2>
+      Result::view_direction() const
+      {
+        const BlockModel    &model = block_model;
+        dealii::Tensor<1, 3> centre, weighted;
+        double               weight = 0;
+        for (const auto &b : model.blocks())
+          centre += b.centroid / double(model.blocks().size());
+        for (const auto &i : model.interfaces())
+          if (i.second == rigid_blocks::Interface::support)
+            {
+              const double w = ground(i.centre, i.support_label).norm();
+              weighted += w * (i.centre - dealii::Point<3>(centre));
+              weight += w;
+            }
+        if (weight == 0)
+          for (unsigned int b = 0; b < model.blocks().size(); ++b)
+            weighted += block_motion.translation[b].norm() *
+                        (model.blocks()[b].centroid - dealii::Point<3>(centre));
+        dealii::Tensor<1, 2> d;
+        d[0] = weighted[0];
+        d[1] = weighted[1];
+        return d.norm() >
+                   1e-9 * model.length_scale() *
+                     std::max(largest_displacement, largest_support_motion) ?
+                 d / d.norm() :
+                 dealii::Tensor<1, 2>();
+      }
+
+      void
+      Result::render(const ScriptJob                            &job,
+                     std::function<void(const std::string &why)> done) const
+      {
+        pictures.emplace_back(job, std::move(done));
+      }
+
+      double
+      Result::render_pictures() const
+      {
+        if (pictures.empty())
+          return 0;
+        const auto             start = std::chrono::steady_clock::now();
+        std::vector<ScriptJob> jobs;
+        for (const auto &p : pictures)
+          jobs.push_back(p.first);
+        const std::vector<std::string> why = run_scripts(jobs);
+        for (unsigned int j = 0; j < pictures.size(); ++j)
+          pictures[j].second(why[j]);
+        pictures.clear();
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                             start)
+          .count();
+      }
+
       const char *
       Interface::default_plugin()
       {
         return "support reactions, thrust line, cracks, interface forces, "
                "blocks csv, blocks vtu, interfaces vtu, vault pvd, "
-               "vault picture";
+               "vault picture, crack map, report";
       }
 
       std::string
@@ -85,7 +142,9 @@ namespace masonry
       {
         return "Comma-separated list of the outputs of the rigid-block "
                "analyses (settlement, limit load, minimum thickness), "
-               "written once the LP has an optimum; an output that needs "
+               "written once the LP has an optimum (`report' also for a "
+               "run without one: status and explanation); an output that "
+               "needs "
                "another (the picture reads the VTU files) runs it too. "
                "The default writes every output; a shorter list skips the "
                "work and the files of the others. A plugin of an "
@@ -108,6 +167,12 @@ namespace masonry
       Interface::required_plugins() const
       {
         return {};
+      }
+
+      bool
+      Interface::writes_without_solution() const
+      {
+        return false;
       }
     } // namespace postprocess
   }   // namespace rigid_blocks

@@ -32,23 +32,30 @@ namespace masonry
             result.amplification();
           if (!result.is_root())
             return;
-          const BlockModel   &model      = result.model();
-          const auto         &interfaces = model.interfaces();
-          const double        a          = result.amplification();
-          VtuGrid             grid;
-          std::vector<double> opening, normal_force;
-          unsigned int        p = 0;
+          const BlockModel                 &model      = result.model();
+          const auto                       &interfaces = model.interfaces();
+          const double                      a          = result.amplification();
+          VtuGrid                           grid;
+          std::vector<double>               opening, normal_force, support;
+          std::vector<dealii::Tensor<1, 3>> displacement, ground;
+          unsigned int                      p = 0;
           for (unsigned int k = 0; k < interfaces.size(); ++k)
             {
-              const rigid_blocks::Interface &i     = interfaces[k];
-              const unsigned int             base  = grid.points.size();
-              double                         force = 0;
+              const rigid_blocks::Interface &i    = interfaces[k];
+              const unsigned int             base = grid.points.size();
+              const bool                     on_support =
+                i.second == rigid_blocks::Interface::support;
+              double force = 0;
               for (const auto &c : i.points)
                 {
-                  grid.points.push_back(
-                    c.position + a * result.motion().displacement(model,
-                                                                  i.first,
-                                                                  c.position));
+                  const dealii::Tensor<1, 3> u =
+                    result.motion().displacement(model, i.first, c.position);
+                  grid.points.push_back(c.position + a * u);
+                  displacement.push_back(u);
+                  ground.push_back(
+                    on_support ?
+                      result.support_motion(c.position, i.support_label) :
+                      dealii::Tensor<1, 3>());
                   if (p < result.n_forces())
                     force += result.force(p)[0];
                   ++p;
@@ -61,12 +68,17 @@ namespace masonry
                     grid.connectivity.push_back(v);
                   opening.push_back(result.interface_opening()[k]);
                   normal_force.push_back(force);
+                  support.push_back(on_support ? 1 : 0);
                 }
             }
           grid.nodes_per_cell = 4;
           grid.cell_type      = 9;
           grid.cell_data.emplace_back("opening", std::move(opening));
           grid.cell_data.emplace_back("normal_force", std::move(normal_force));
+          grid.cell_data.emplace_back("support", std::move(support));
+          grid.point_vectors.emplace_back("displacement",
+                                          std::move(displacement));
+          grid.point_vectors.emplace_back("support_motion", std::move(ground));
           OutputFile out(context.output.file("interfaces.vtu"));
           grid.write(out);
           out.close();
@@ -81,5 +93,8 @@ MASONRY_REGISTER_RIGID_BLOCK_POSTPROCESSOR(
   "interfaces vtu",
   "interfaces.vtu: every interface as quadrilaterals between its stations "
   "on the first block's side, displaced like blocks.vtu, with the cell "
-  "data opening (the largest normal opening of the interface, m) and "
-  "normal_force (the sum of its normal contact forces, N).")
+  "data opening (the largest normal opening of the interface, m), "
+  "normal_force (the sum of its normal contact forces, N) and support (1 "
+  "on a support joint, 0 between blocks), and the point data displacement "
+  "(of the first block, m, not amplified) and support_motion (the "
+  "prescribed motion of the ground at a support point, m; zero elsewhere).")

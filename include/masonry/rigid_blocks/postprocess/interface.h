@@ -46,10 +46,12 @@
 
 #include <masonry/core/plugins.h>
 #include <masonry/core/run_context.h>
+#include <masonry/core/scripts.h>
 #include <masonry/rigid_blocks/block_model.h>
 #include <masonry/rigid_blocks/output.h>
 
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -84,7 +86,20 @@ namespace masonry
                const std::vector<std::array<double, 3>> &forces,
                const OutputOptions                      &options,
                const bool                                supports_move,
-               const MPI_Comm                            mpi_communicator);
+               const MPI_Comm                            mpi_communicator,
+               const bool                                has_solution = true);
+
+        /**
+         * Whether the LP had an optimum. Without one (status `mechanism',
+         * `incompatible', ...) the blocks are at rest, there are no
+         * contact forces, and only the postprocessors that
+         * writes_without_solution() run.
+         */
+        bool
+        has_solution() const
+        {
+          return solution;
+        }
 
         /** The blocks and interfaces. */
         const BlockModel &
@@ -185,6 +200,16 @@ namespace masonry
           return displacement_amplification;
         }
 
+        /**
+         * The horizontal direction (unit, or zero) from the vault's centre
+         * towards what moves most: the settling supports (weighted by
+         * their motion), or without support motion the blocks (weighted by
+         * their translation). The pictures look from there, so that the
+         * settled side is in view.
+         */
+        dealii::Tensor<1, 2>
+        view_direction() const;
+
         /** The output entries of the analysis (subdivisions, picture). */
         const OutputOptions &
         options() const
@@ -206,6 +231,26 @@ namespace masonry
           return root;
         }
 
+        /**
+         * Queue a picture (rank 0): @p job runs after every postprocessor
+         * has run, in one Python process with the other queued pictures
+         * (run_scripts(): Python starts and imports matplotlib once per
+         * run), and @p done is then called with "" or the one-line reason
+         * why the picture was not written. A job with an output writes it
+         * under a temporary name, renamed when complete.
+         */
+        void
+        render(const ScriptJob                            &job,
+               std::function<void(const std::string &why)> done) const;
+
+        /**
+         * Run the queued pictures and call their `done`; the analysis
+         * calls it once after the postprocessors. Returns the seconds it
+         * took (0 without pictures).
+         */
+        double
+        render_pictures() const;
+
       private:
         const BlockModel                         &block_model;
         const Motion                             &block_motion;
@@ -215,10 +260,15 @@ namespace masonry
         const bool                                moving_supports;
         const MPI_Comm                            mpi_communicator;
         const bool                                root;
+        const bool                                solution;
         double                                    largest_displacement   = 0;
         double                                    largest_support_motion = 0;
         std::vector<double>                       opening;
         double displacement_amplification = 1;
+        /** The queued pictures (render()). */
+        mutable std::vector<
+          std::pair<ScriptJob, std::function<void(const std::string &)>>>
+          pictures;
       };
 
       /**
@@ -226,7 +276,8 @@ namespace masonry
        * analysis creates the listed ones when it is set up (so
        * `--validate` checks their parameters) and calls execute() of each,
        * in the order of the list and after the ones it requires, on every
-       * MPI rank once the LP has an optimum.
+       * MPI rank once the LP has an optimum (and, for those that
+       * writes_without_solution(), when it has none).
        */
       class Interface
       {
@@ -264,6 +315,15 @@ namespace masonry
          */
         virtual std::vector<std::string>
         required_plugins() const;
+
+        /**
+         * Whether this output has something to say about a run without an
+         * optimum (Result::has_solution() false): the status and
+         * explanation of the summary on the blocks at rest. Default:
+         * false (the output is not written then).
+         */
+        virtual bool
+        writes_without_solution() const;
 
         /**
          * Write this output: files through @p context.output (normally on
