@@ -85,8 +85,9 @@ main(int argc, char **argv)
               again.at("adaptation").at("evaluations").get<double>() ==
                 ad.at("evaluations").get<double>();
   for (unsigned int i = 0; i < ad.at("best_genes").size(); ++i)
-    same = same && again.at("adaptation").at("best_genes").at(i).get<double>() ==
-                     ad.at("best_genes").at(i).get<double>();
+    same =
+      same && again.at("adaptation").at("best_genes").at(i).get<double>() ==
+                ad.at("best_genes").at(i).get<double>();
   check(same, "the same seed reproduces the result exactly");
 
   // settlement, 6 blocks, against a uniform mesh of 512 blocks

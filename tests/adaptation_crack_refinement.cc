@@ -88,8 +88,9 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const double                             R = 5;
 
-  const double fine =
-    run("fine", arch_prm(R, 1, 256, "0; 0; -0.01")).at("objective").get<double>();
+  const double fine = run("fine", arch_prm(R, 1, 256, "0; 0; -0.01"))
+                        .at("objective")
+                        .get<double>();
   const double finest = run("finest", arch_prm(R, 1, 64, "0; 0; -0.01"))
                           .at("objective")
                           .get<double>();

@@ -35,7 +35,8 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  check(run("uniform", barrel).at("status").get<std::string>() == "incompatible",
+  check(run("uniform", barrel).at("status").get<std::string>() ==
+          "incompatible",
         "uniform mesh: incompatible");
   check(stopped(run("genetic",
                     barrel + "subsection Adaptation\n"

@@ -60,9 +60,11 @@ main(int argc, char **argv)
         "blocks");
 
   const auto &cd = c.at("adaptation");
-  check(cd.at("islands").get<double>() == 4 && cd.at("threads").get<double>() == 2,
+  check(cd.at("islands").get<double>() == 4 &&
+          cd.at("threads").get<double>() == 2,
         "two threads per rank: four islands");
-  same = c.at("external_work").get<double>() == d.at("external_work").get<double>();
+  same =
+    c.at("external_work").get<double>() == d.at("external_work").get<double>();
   for (unsigned int i = 0; i < cd.at("best_genes").size(); ++i)
     same = same && cd.at("best_genes").at(i).get<double>() ==
                      d.at("adaptation").at("best_genes").at(i).get<double>();

@@ -89,10 +89,12 @@ main(int argc, char **argv)
   const masonry::Json b = run("settlement_scratch", settlement + adaptation(0));
   const auto         &aa = a.at("adaptation");
   const auto         &ba = b.at("adaptation");
-  check(aa.at("best_fitness").get<double>() == ba.at("best_fitness").get<double>(),
+  check(aa.at("best_fitness").get<double>() ==
+          ba.at("best_fitness").get<double>(),
         "settlement: the same best fitness with and without reuse");
   check(same_genes(a, b), "settlement: the same best genes");
-  check(aa.at("evaluations").get<double>() == ba.at("evaluations").get<double>(),
+  check(aa.at("evaluations").get<double>() ==
+          ba.at("evaluations").get<double>(),
         "settlement: the same number of evaluations");
   check(aa.at("repeated_evaluations").get<double>() > 0 &&
           ba.at("repeated_evaluations").get<double>() == 0,
@@ -116,7 +118,8 @@ main(int argc, char **argv)
   check(std::abs(fe - fw) <= 1e-5 * fw,
         "minimum thickness: the same factor with and without warm starts "
         "(1e-5)");
-  check(e.at("lp_iterations").get<double>() > w.at("lp_iterations").get<double>(),
+  check(e.at("lp_iterations").get<double>() >
+          w.at("lp_iterations").get<double>(),
         "minimum thickness: the run without warm starts needs more simplex "
         "iterations");
 }

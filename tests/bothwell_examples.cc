@@ -85,10 +85,10 @@ main(int argc, char **argv)
             name + ": optimal, the optimum of GLPK (1e-6)");
     }
   {
-    const std::string   name    = "bothwell-seismic";
-    const masonry::Json clp     = run(name, example(name));
-    const masonry::Json other   = run(name + "_glpk", example(name) + glpk());
-    const bool          optimal = clp.at("status").get<std::string>() == "optimal" &&
+    const std::string   name  = "bothwell-seismic";
+    const masonry::Json clp   = run(name, example(name));
+    const masonry::Json other = run(name + "_glpk", example(name) + glpk());
+    const bool optimal = clp.at("status").get<std::string>() == "optimal" &&
                          other.at("status").get<std::string>() == "optimal";
     const double error = optimal ?
                            relative(clp.at("load_multiplier").get<double>(),

@@ -58,8 +58,8 @@ main(int argc, char **argv)
     {
       auto s = run(name, wall("english", name, 7, gap));
       std::cout << name << " wall, gap " << gap << " m: bed voids "
-                << s["bed_void_area"].get<double>() << " m^2 (hand " << n * strip
-                << ")\n";
+                << s["bed_void_area"].get<double>() << " m^2 (hand "
+                << n * strip << ")\n";
       check(relative(s["bed_void_area"].get<double>(), n * strip) < 1e-9,
             name + " wall: bed voids = collar planes x 6 bed joints x 0.44 "
                    "m x (h_m + 2 g)");

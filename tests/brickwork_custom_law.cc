@@ -238,7 +238,8 @@ main(int argc, char **argv)
   const auto   b    = curve("resumed");
   const double diff = curve_difference(a, b);
   check(stopped.at("status").get<std::string>() == "interrupted" &&
-          resumed.at("status").get<std::string>() == "completed" && diff < 1e-12,
+          resumed.at("status").get<std::string>() == "completed" &&
+          diff < 1e-12,
         "checkpointed after 11 steps and resumed: the curve of the "
         "uninterrupted run (1e-12)");
   check(contains(pvd_entries("results/resumed/solution.pvd"),

@@ -135,7 +135,8 @@ main(int argc, char **argv)
   double     max_damage = 0;
   for (const auto &row : c)
     max_damage = std::max(max_damage, row.back());
-  check(full.at("status").get<std::string>() == "completed" && max_damage > 0.1 &&
+  check(full.at("status").get<std::string>() == "completed" &&
+          max_damage > 0.1 &&
           std::abs(full.at("max_brick_damage").get<double>() - max_damage) <
             1e-10,
         "the test material runs the cyclic wallette and its damage reaches "
@@ -147,7 +148,8 @@ main(int argc, char **argv)
   const auto   a = curve("full"), b = curve("resumed");
   const double diff = curve_difference(a, b);
   check(stopped.at("status").get<std::string>() == "interrupted" &&
-          resumed.at("status").get<std::string>() == "completed" && diff < 1e-12,
+          resumed.at("status").get<std::string>() == "completed" &&
+          diff < 1e-12,
         "checkpointed after 13 steps and resumed: the curve of the "
         "uninterrupted run (1e-12)");
   std::ifstream     vtu("results/resumed/solution_0000.0.vtu");

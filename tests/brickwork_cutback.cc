@@ -60,7 +60,8 @@ main(int argc, char **argv)
   const masonry::Json a = run("cutback", text(10e9, 2, 2));
   check(a.at("status").get<std::string>() == "completed",
         "large steps: status completed");
-  check(a.at("cut_backs").get<double>() > 0, "large steps: steps were cut back");
+  check(a.at("cut_backs").get<double>() > 0,
+        "large steps: steps were cut back");
   check(finite("cutback"), "large steps: curve finite");
   check(a.at("max_damage").get<double>() == 1, "large steps: joint debonded");
 
@@ -75,12 +76,13 @@ main(int argc, char **argv)
         "snap-back: exit code 1, one error line");
   const masonry::Json b =
     masonry::parse_json(testing::read_file("results/snap_back/summary.json"));
-  check(b.at("status").get<std::string>() == "failed" && !b.at("complete").get<bool>() &&
+  check(b.at("status").get<std::string>() == "failed" &&
+          !b.at("complete").get<bool>() &&
           b.at("analysis_status").get<std::string>() == "not converged",
         "snap-back: status failed (analysis status not converged)");
   check(b.contains("message") &&
           b.at("message").get<std::string>().find("no convergence at platen "
-                                           "displacement") == 0,
+                                                  "displacement") == 0,
         "snap-back: message says where it stopped");
   check(finite("snap_back"), "snap-back: curve finite");
   check(curve("snap_back").size() == b.at("steps").get<double>() + 1,

@@ -173,7 +173,8 @@ namespace
       "0.0035\nset Cycles per amplitude = 2\nset Target strain = "
       "0.0035\nset Number of steps = 300\nset Unloading stress = 0\n";
     const masonry::Json r = run("hex_repeat", prm(repeat, material()));
-    check(r.at("status").get<std::string>() == "completed", "hex_repeat: completed");
+    check(r.at("status").get<std::string>() == "completed",
+          "hex_repeat: completed");
     std::ifstream in("results/hex_repeat/envelope.csv");
     std::string   line;
     std::getline(in, line);
@@ -279,8 +280,8 @@ namespace
               f_t / E0 + w * std::log(f_t / (0.05 * peak));
             const auto &last_row = cr.back(), &before = cr[cr.size() - 2];
             check(c.at("status").get<std::string>() == "completed" &&
-                    c.at("message").get<std::string>().rfind("the specimen collapsed",
-                                                      0) == 0,
+                    c.at("message").get<std::string>().rfind(
+                      "the specimen collapsed", 0) == 0,
                   "collapse: status completed, the message says so");
             check(last_row[4] < 0.05 * peak && before[4] >= 0.05 * peak &&
                     last_row[2] >= e_collapse && before[2] < e_collapse,
@@ -304,7 +305,8 @@ namespace
       run("resumed", prm(short_hex + "set Resume = true\n", material()));
     const auto   a = curve("full"), b = curve("resumed");
     const double diff = curve_difference(a, b);
-    check(resumed.at("status").get<std::string>() == "completed" && diff < 1e-12,
+    check(resumed.at("status").get<std::string>() == "completed" &&
+            diff < 1e-12,
           "resume: the resumed run reproduces the uninterrupted curve "
           "(1e-12)");
 

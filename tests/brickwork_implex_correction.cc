@@ -151,7 +151,8 @@ main(int argc, char **argv)
   check(f.at("implex_steps_redone").get<double>() > 0,
         "iterate, floor 0.01: steps over the tolerance are redone smaller");
   const masonry::Json any = cube("any", "iterate at any step", 0.01);
-  check(any.at("status").get<std::string>() == "completed", "any step: completed");
+  check(any.at("status").get<std::string>() == "completed",
+        "any step: completed");
   check(any.at("implex_steps_redone").get<double>() == 0 &&
           any.at("steps").get<double>() == 24,
         "any step: no step redone, the 24 nominal steps");

@@ -67,13 +67,14 @@ namespace
                   << c << ": head joints " << s["head_joint_area"].get<double>()
                   << " m^2 (hand " << head_double << "), collar " << collar
                   << " m^2\n";
-        check(relative(s["head_joint_area"].get<double>(), head_double) < 1e-9 &&
+        check(relative(s["head_joint_area"].get<double>(), head_double) <
+                  1e-9 &&
                 relative(s["collar_joint_area"].get<double>(), collar) < 1e-9,
               "double wall: head and collar joint areas as counted by hand");
-        check(relative(s["head_void_area"].get<double>(), (1 - h) * head_double) <
-                  1e-9 &&
-                relative(s["collar_void_area"].get<double>(), (1 - c) * collar) <
-                  1e-9,
+        check(relative(s["head_void_area"].get<double>(),
+                       (1 - h) * head_double) < 1e-9 &&
+                relative(s["collar_void_area"].get<double>(),
+                         (1 - c) * collar) < 1e-9,
               "double wall: voids = (1 - fill) x joint area");
         check((s["n_collar_interface_faces"].get<double>() == 0) == (c == 0),
               "double wall: collar bond interfaces exist unless the collar "

@@ -45,8 +45,10 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const masonry::Json gmres  = run("gmres", wallette("gmres amg"));
   const masonry::Json direct = run("direct", wallette("direct"));
-  check(direct.at("status").get<std::string>() == "completed", "direct: completed");
-  check(gmres.at("status").get<std::string>() == "completed", "gmres amg: completed");
+  check(direct.at("status").get<std::string>() == "completed",
+        "direct: completed");
+  check(gmres.at("status").get<std::string>() == "completed",
+        "gmres amg: completed");
   check(gmres.at("direct_solver_fallbacks").get<double>() > 0,
         "gmres amg: some solves fell back to MUMPS");
   check(direct.at("deleted_cells").get<double>() > 0,

@@ -145,9 +145,10 @@ namespace
             analysis);
     bool named = summary.contains("message");
     for (const auto &w : words)
-      named = named &&
-              summary.at("message").get<std::string>().find(w) != std::string::npos &&
-              r.err.find(w) != std::string::npos;
+      named =
+        named &&
+        summary.at("message").get<std::string>().find(w) != std::string::npos &&
+        r.err.find(w) != std::string::npos;
     std::string list;
     for (const auto &w : words)
       list += (list.empty() ? "'" : ", '") + w + "'";

@@ -45,19 +45,20 @@ main(int argc, char **argv)
   try
     {
       const masonry::Json j = masonry::parse_json(json.out);
-      std::cout << "  parses as JSON: yes\n"
-                << "  Analysis: value '"
-                << j.at("Analysis").at("value").get<std::string>()
-                << "', pattern description '"
-                << j.at("Analysis").at("pattern_description").get<std::string>()
-                << "'\n"
-                << "  Test/Length: default '"
-                << j.at("Test").at("Length").at("default_value").get<std::string>()
-                << "', documentation '"
-                << j.at("Test").at("Length").at("documentation").get<std::string>()
-                << "'\n"
-                << "  Output directory declared: "
-                << (j.contains("Output directory") ? "yes" : "no") << "\n";
+      std::cout
+        << "  parses as JSON: yes\n"
+        << "  Analysis: value '"
+        << j.at("Analysis").at("value").get<std::string>()
+        << "', pattern description '"
+        << j.at("Analysis").at("pattern_description").get<std::string>()
+        << "'\n"
+        << "  Test/Length: default '"
+        << j.at("Test").at("Length").at("default_value").get<std::string>()
+        << "', documentation '"
+        << j.at("Test").at("Length").at("documentation").get<std::string>()
+        << "'\n"
+        << "  Output directory declared: "
+        << (j.contains("Output directory") ? "yes" : "no") << "\n";
     }
   catch (const std::exception &exc)
     {

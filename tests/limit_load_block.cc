@@ -117,9 +117,10 @@ main(int argc, char **argv)
       run("reaction", block_prm(mohr_coulomb(0.1, 1000), "0; 1; 0"));
     const double lambda = r.at("load_multiplier").get<double>();
     const auto  &base   = r.at("support_reactions").at("base");
-    const double err    = std::max({std::abs(base.at(0).get<double>()) / W,
-                                    relative(base.at(1).get<double>(), -lambda * W),
-                                    relative(base.at(2).get<double>(), W)});
+    const double err =
+      std::max({std::abs(base.at(0).get<double>()) / W,
+                relative(base.at(1).get<double>(), -lambda * W),
+                relative(base.at(2).get<double>(), W)});
     check(err < 1e-8, "support reaction (0, −λW, W) from the LP dual to 1e-8");
   }
 

@@ -42,7 +42,8 @@ main(int argc, char **argv)
     "subsection LP solver\n  subsection Clp\n    set Algorithm = automatic\n"
     "  end\nend\n";
   const masonry::Json s = run("corner", prm);
-  check(s.at("status").get<std::string>() == "optimal", "corner settlement: optimal");
+  check(s.at("status").get<std::string>() == "optimal",
+        "corner settlement: optimal");
   const double lp_objective =
     s.at("objective").get<double>() /
     (s.at("total_weight").get<double>() * s.at("max_settlement").get<double>());

@@ -64,8 +64,9 @@ namespace
           run(f + "_always", prm + solver(a, "always"));
         const masonry::Json interior =
           run(f + "_never", prm + solver(a, "never"));
-        const bool optimal = vertex.at("status").get<std::string>() == "optimal" &&
-                             interior.at("status").get<std::string>() == "optimal";
+        const bool optimal =
+          vertex.at("status").get<std::string>() == "optimal" &&
+          interior.at("status").get<std::string>() == "optimal";
         check(optimal && kept_interior(interior) && !kept_interior(vertex),
               name + ", " + a + ": `never' keeps the interior point");
         const double error = optimal ? relative(interior.at(key).get<double>(),

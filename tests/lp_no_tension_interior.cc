@@ -119,10 +119,10 @@ main(int argc, char **argv)
       run("limit_always", limit + crossover("always"));
     const bool optimal = never.at("status").get<std::string>() == "optimal" &&
                          always.at("status").get<std::string>() == "optimal";
-    const double error = optimal ?
-                           relative(never.at("load_multiplier").get<double>(),
-                                    always.at("load_multiplier").get<double>()) :
-                           1.;
+    const double error =
+      optimal ? relative(never.at("load_multiplier").get<double>(),
+                         always.at("load_multiplier").get<double>()) :
+                1.;
     if (!(error <= 1e-12))
       std::cout << "  relative difference " << error << "\n";
     check(optimal && !kept_interior(never) && error <= 1e-12,

@@ -40,9 +40,9 @@ main(int argc, char **argv)
                 << "\n";
       const masonry::Json summary =
         masonry::parse_json(testing::read_file("results/summary.json"));
-      std::cout << "summary.json: status " << summary.at("status").get<std::string>()
-                << ", n_mpi_ranks " << summary.at("n_mpi_ranks").get<double>()
-                << "\n";
+      std::cout << "summary.json: status "
+                << summary.at("status").get<std::string>() << ", n_mpi_ranks "
+                << summary.at("n_mpi_ranks").get<double>() << "\n";
     }
 
   // an error on all ranks is reported once

@@ -100,7 +100,8 @@ main(int argc, char **argv)
 
   const masonry::Json none = vault_tests::run("none", with_list(""));
   std::cout << "empty list: " << joined(files(none)) << "\n";
-  check(files(none) == always && none.at("status").get<std::string>() == "optimal",
+  check(files(none) == always &&
+          none.at("status").get<std::string>() == "optimal",
         "empty list: no result files, status optimal");
 
   testing::write_file("twice.prm",

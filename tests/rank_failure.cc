@@ -55,8 +55,8 @@ main(int argc, char **argv)
             << (err.find(expected) != std::string::npos ? "yes" : "no") << "\n";
   const masonry::Json summary =
     masonry::parse_json(testing::read_file("results/summary.json"));
-  std::cout << "summary.json: status " << summary.at("status").get<std::string>()
-            << ", complete "
+  std::cout << "summary.json: status "
+            << summary.at("status").get<std::string>() << ", complete "
             << (summary.at("complete").get<bool>() ? "yes" : "no") << "\n";
   if (code == 0 || seconds >= 30)
     {

@@ -20,7 +20,8 @@ main(int argc, char **argv)
   testing::check_error(r);
   const masonry::Json summary =
     masonry::parse_json(testing::read_file("results/summary.json"));
-  std::cout << "summary.json: status = " << summary.at("status").get<std::string>()
+  std::cout << "summary.json: status = "
+            << summary.at("status").get<std::string>()
             << "\n  error = " << summary.at("error").get<std::string>()
             << "\n  files:";
   for (std::size_t i = 0; i < summary.at("files").size(); ++i)

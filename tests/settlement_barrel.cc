@@ -31,7 +31,8 @@ main(int argc, char **argv)
       << "  set Settling edges = springing right\n"
       << "  set Settlement = 0; 0; -0.01\n  set Write picture = false\nend\n";
   const masonry::Json barrel = run("barrel", prm.str());
-  check(barrel.at("status").get<std::string>() == "optimal", "barrel vault: optimal");
+  check(barrel.at("status").get<std::string>() == "optimal",
+        "barrel vault: optimal");
   check(relative(barrel.at("external_work").get<double>() / L, arch) < 1e-8,
         "barrel work per unit length = arch work per unit depth (1e-8)");
 }

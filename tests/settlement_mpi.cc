@@ -115,10 +115,10 @@ namespace
     c.same_crack_list = a.size() == b.size();
     for (unsigned int i = 0; c.same_crack_list && i < a.size(); ++i)
       {
-        c.same_crack_list =
-          a.at(i).at("interface").get<double>() ==
-            b.at(i).at("interface").get<double>() &&
-          a.at(i).at("type").get<std::string>() == b.at(i).at("type").get<std::string>();
+        c.same_crack_list = a.at(i).at("interface").get<double>() ==
+                              b.at(i).at("interface").get<double>() &&
+                            a.at(i).at("type").get<std::string>() ==
+                              b.at(i).at("type").get<std::string>();
         for (const char *key : {"max_opening", "relative_rotation"})
           {
             va.push_back(a.at(i).at(key).get<double>());
@@ -171,8 +171,8 @@ main(int argc, char **argv)
 
       std::cout << "ranks: " << parallel.at("n_mpi_ranks").get<double>()
                 << " and " << serial.at("n_mpi_ranks").get<double>() << "\n"
-                << "status: " << parallel.at("status").get<std::string>() << " and "
-                << serial.at("status").get<std::string>() << "\n"
+                << "status: " << parallel.at("status").get<std::string>()
+                << " and " << serial.at("status").get<std::string>() << "\n"
                 << "cracks: " << parallel.at("cracks").size() << " ("
                 << parallel.at("n_hinges").get<double>() << " hinges) and "
                 << serial.at("cracks").size() << " ("

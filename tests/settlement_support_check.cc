@@ -204,7 +204,8 @@ main(int argc, char **argv)
     const auto &x = s.at("incompatibility");
     check(s.at("status").get<std::string>() == "incompatible" &&
             x.at("kind").get<std::string>() == "lp" &&
-            s.at("lp_message").get<std::string>().find("phase 1") != std::string::npos,
+            s.at("lp_message").get<std::string>().find("phase 1") !=
+              std::string::npos,
           "without the check: incompatible by the LP's phase 1");
     const double bound = 4 * shear_l1_misfit();
     check(x.at("total_misfit").get<double>() > 0 &&
@@ -284,7 +285,8 @@ main(int argc, char **argv)
             (status != "optimal" ||
              std::abs(with.at("objective").get<double>() -
                       without.at("objective").get<double>()) <=
-               1e-8 * std::max(1., std::abs(with.at("objective").get<double>()))))
+               1e-8 *
+                 std::max(1., std::abs(with.at("objective").get<double>()))))
           ++same;
       }
   check(n == 10 && same == n,
