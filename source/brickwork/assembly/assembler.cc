@@ -3,7 +3,6 @@
  * Assembly of bricks and joints.
  */
 #include <deal.II/base/quadrature_lib.h>
-#include <deal.II/base/work_stream.h>
 
 #include "assembler.h"
 
@@ -13,6 +12,7 @@
 #include <cstring>
 #include <limits>
 
+#include "guarded_work_stream.h"
 #include "one_thread.h"
 
 namespace masonry
@@ -425,12 +425,12 @@ namespace masonry
           if (with_matrix)
             adder.add(CrsAdder::cell, copy.index, copy.k, copy.dofs);
         };
-        WorkStream::run(system.dof_handler.begin_active(),
-                        system.dof_handler.end(),
-                        worker,
-                        copier,
-                        BrickScratch(),
-                        LocalContribution());
+        run_guarded(system.dof_handler.begin_active(),
+                    system.dof_handler.end(),
+                    worker,
+                    copier,
+                    BrickScratch(),
+                    LocalContribution());
       }
 
       void
@@ -619,12 +619,12 @@ namespace masonry
           if (with_matrix)
             adder.add(CrsAdder::joint, copy.index, copy.k, dofs);
         };
-        WorkStream::run(items.cbegin(),
-                        items.cend(),
-                        worker,
-                        copier,
-                        JointScratch(),
-                        LocalContribution());
+        run_guarded(items.cbegin(),
+                    items.cend(),
+                    worker,
+                    copier,
+                    JointScratch(),
+                    LocalContribution());
       }
 
       double
@@ -737,12 +737,12 @@ namespace masonry
                     damage_error(2, material, parts.bricks, p, s, change);
                   }
               };
-            WorkStream::run(system.dof_handler.begin_active(),
-                            system.dof_handler.end(),
-                            worker,
-                            gather,
-                            BrickScratch(),
-                            Change());
+            run_guarded(system.dof_handler.begin_active(),
+                        system.dof_handler.end(),
+                        worker,
+                        gather,
+                        BrickScratch(),
+                        Change());
           }
         const auto                     &faces = parts.joints.faces;
         const std::vector<unsigned int> items = active_faces(parts);
@@ -774,7 +774,7 @@ namespace masonry
                 damage_error(3, law, states, p, s, change);
               }
           };
-        WorkStream::run(
+        run_guarded(
           items.cbegin(), items.cend(), worker, gather, Scratch(), Change());
         gather_non_finite();
         if (!non_finite().empty())
