@@ -153,6 +153,9 @@ namespace masonry
           splitting_law = brickwork::make_splitting_law(
             splitting,
             *material,
+            "Brick material/" +
+              plugins::section_name(
+                plugins::Registry<brickwork::BrickMaterial>::selected(prm)),
             s.mesh.size.length -
               (s.mesh.detailed ? s.mesh.mortar_thickness : 0.));
         // the height of the wallette (the detailed one's top course has no

@@ -7,8 +7,10 @@
 #include <masonry/brickwork/interface_law.h>
 #include <masonry/brickwork/laws/composite_joint.h>
 #include <masonry/core/parameters.h>
+#include <masonry/core/plugins.h>
 
 #include <cmath>
+#include <map>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
@@ -214,18 +216,20 @@ namespace masonry
       /**
        * Set the law from @p q directly (not from a parameter file): the
        * splitting interfaces; @p derived are its derived values and
-       * @p entry the parameter named in errors.
+       * @p entries name, for each parameter of CompositeJoint ("Tensile
+       * strength", "Cohesion", ...), the full path of the entry (or
+       * entries) it was given by or derived from, for errors.
        */
       void
-      configure(const CompositeJoint::Parameters &q,
-                const std::vector<DerivedValue>  &derived,
-                const std::string                &entry)
+      configure(const CompositeJoint::Parameters         &q,
+                const std::vector<DerivedValue>          &derived,
+                const std::map<std::string, std::string> &entries)
       {
         p                = q;
         normal_stiffness = q.normal_stiffness;
         shear_stiffness  = q.shear_stiffness;
         given_derived    = derived;
-        error_entry      = entry;
+        error_entries    = entries;
         law              = std::make_unique<CompositeJoint>(make(1.));
         make(1.8);
       }
@@ -233,7 +237,7 @@ namespace masonry
       std::vector<DerivedValue>
       derived_values() const override
       {
-        if (!error_entry.empty())
+        if (!error_entries.empty())
           return given_derived;
         std::vector<DerivedValue> v;
         if (penalties_derived)
@@ -377,26 +381,45 @@ namespace masonry
           }
         catch (const std::invalid_argument &e)
           {
-            // the message names the entry (composite joint: <entry> ...):
-            // an entry of this subsection is named as the error's entry
-            std::string m = e.what(), entry = error_entry;
-            if (factor != 1.)
+            // the message names the parameter (composite joint: <name>
+            // ...): an entry of this subsection of that name, or, for the
+            // splitting interfaces, the entry it was given by or derived
+            // from
+            std::string m = e.what(), name;
+            if (factor == 1.8)
               m += " (with the strengths times 1.8, the largest factor of "
                    "`Strength scatter')";
-            for (const std::string name : {"Tensile strength",
-                                           "Mode I fracture energy",
-                                           "Cohesion",
-                                           "Friction",
-                                           "Mode II fracture energy",
-                                           "Cap strength",
-                                           "Cap Cnn",
-                                           "Cap Css",
-                                           "Cap peak jump",
-                                           "Compressive fracture energy"})
-              if (entry.empty() && m.rfind("composite joint: " + name, 0) == 0)
-                entry = name;
+            else if (factor != 1.)
+              m += " (with the strengths times " + std::to_string(factor) +
+                   ", a point's factor of `Strength scatter')";
+            for (const std::string candidate : {"Tensile strength",
+                                                "Mode I fracture energy",
+                                                "Cohesion",
+                                                "Friction",
+                                                "Mode II fracture energy",
+                                                "Cap strength",
+                                                "Cap Cnn",
+                                                "Cap Css",
+                                                "Cap peak jump",
+                                                "Compressive fracture energy",
+                                                "Normal stiffness",
+                                                "Shear stiffness"})
+              if (name.empty() &&
+                  m.rfind("composite joint: " + candidate, 0) == 0)
+                name = candidate;
+            if (error_entries.empty())
+              AssertThrow(false,
+                          ExcParameter(name.empty() ? "Composite" : name, m));
+            const auto        named = error_entries.find(name);
+            const std::string entry = named != error_entries.end() ?
+                                        named->second :
+                                        error_entries.begin()->second;
+            // (a full path: not relative to the subsection being parsed)
+            const plugins::ParsePathScope top_level("");
             AssertThrow(false,
-                        ExcParameter(entry.empty() ? "Composite" : entry, m));
+                        ExcParameter(entry,
+                                     "the splitting interfaces' law from it: " +
+                                       m));
           }
         return CompositeJoint(p);
       }
@@ -404,18 +427,50 @@ namespace masonry
       CompositeJoint::Parameters p;
       /** Whether k_n and k_s come from the moduli. */
       bool penalties_derived = false;
-      /** configure(): the derived values and the entry named in errors. */
-      std::vector<DerivedValue>       given_derived;
-      std::string                     error_entry;
-      std::unique_ptr<CompositeJoint> law;
+      /** configure(): the derived values and, for each parameter, the
+       * entry named in its errors. */
+      std::vector<DerivedValue>          given_derived;
+      std::map<std::string, std::string> error_entries;
+      std::unique_ptr<CompositeJoint>    law;
     };
 
     std::unique_ptr<InterfaceLaw>
     make_splitting_law(const SplittingSettings &s,
                        const BrickMaterial     &brick,
+                       const std::string       &brick_section,
                        const double             unit_length)
     {
       std::vector<DerivedValue> derived;
+      // the entry each value comes from: the Wallette's own, or the brick
+      // material's it is derived from
+      const auto from = [&](const double       given,
+                            const std::string &wallette_entry,
+                            const std::string &brick_entry) {
+        return given > 0 ? "Wallette/" + wallette_entry :
+                           brick_section + "/" + brick_entry;
+      };
+      const std::string tensile     = from(s.tensile_strength,
+                                       "Splitting tensile strength",
+                                       "Tensile strength"),
+                        energy      = from(s.fracture_energy,
+                                      "Splitting fracture energy",
+                                      "Tensile fracture energy"),
+                        compressive = from(s.compressive_strength,
+                                           "Splitting compressive strength",
+                                           "Compressive strength"),
+                        stiffness   = from(s.stiffness,
+                                         "Splitting stiffness",
+                                         "Young's modulus");
+      const std::map<std::string, std::string> entries = {
+        {"Tensile strength", tensile},
+        {"Mode I fracture energy", energy},
+        {"Mode II fracture energy", energy},
+        {"Cohesion", tensile},
+        {"Friction", tensile},
+        {"Cap strength", compressive},
+        {"Compressive fracture energy", compressive},
+        {"Normal stiffness", stiffness},
+        {"Shear stiffness", stiffness}};
       // a value given (> 0) or the brick material's (printed as derived)
       const auto value = [&](const double       given,
                              const double       from_brick,
@@ -450,9 +505,17 @@ namespace masonry
                                "compressive_strength",
                                "Pa",
                                "the brick material's compressive strength");
-      AssertThrow(f_c > f_t,
-                  ExcParameter("Splitting compressive strength",
-                               "must exceed the tensile strength"));
+      if (!(f_c > f_t))
+        {
+          // (full paths: not relative to the subsection being parsed)
+          const plugins::ParsePathScope top_level("");
+          AssertThrow(false,
+                      ExcParameter(compressive,
+                                   "the splitting interfaces' compressive "
+                                   "strength must exceed their tensile "
+                                   "strength (from `" +
+                                     tensile + "')"));
+        }
       const double E = brick.youngs_modulus(), nu = brick.poissons_ratio();
       CompositeJoint::Parameters q;
       q.tensile_strength = f_t;
@@ -507,7 +570,7 @@ namespace masonry
                          "10 f_c: out of reach (the unit's crushing is the "
                          "brick material's)"});
       auto law = std::make_unique<CompositeInterface>();
-      law->configure(q, derived, "Splitting tensile strength");
+      law->configure(q, derived, entries);
       return law;
     }
   } // namespace brickwork

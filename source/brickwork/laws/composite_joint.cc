@@ -88,8 +88,11 @@ namespace masonry
         if (p.cap_strength < p.tensile_strength)
           bad("Cap strength must not be below Tensile strength (a cap of 1 "
               "Pa left the return mapping without an admissible state)");
+        // (to round-off: c / tan(phi) of Mohr-Coulomb through the uniaxial
+        // strengths is f_t f_c / (f_c - f_t), which rounds to f_t when f_t
+        // is many orders below f_c)
         if (p.tensile_strength * std::max(p.friction, p.residual_friction) >
-            p.cohesion)
+            p.cohesion * (1 + 1e-12))
           bad("Tensile strength must not exceed Cohesion / Friction (the "
               "tension cut-off would lie beyond the apex of the Coulomb "
               "cone)");

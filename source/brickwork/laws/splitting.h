@@ -10,6 +10,7 @@
 #include <masonry/brickwork/interface_law.h>
 
 #include <memory>
+#include <string>
 
 namespace masonry
 {
@@ -36,13 +37,16 @@ namespace masonry
      * cut-off f_t and G_I = G_f of the unit, Coulomb friction through the
      * unit's uniaxial strengths (c = sqrt(f_c f_t) / 2, tan(phi) = (f_c -
      * f_t) / (2 sqrt(f_c f_t))), G_II = 10 G_f, k_s = k_n / (2 (1 + nu_b)),
-     * the cap out of reach (10 f_c). Values not given come from @p brick;
-     * @p unit_length (m) scales the default penalty. Every value not given
-     * is listed by derived_values().
+     * the cap out of reach (10 f_c). Values not given come from @p brick,
+     * whose entries stand in @p brick_section (the full path, e.g. "Brick
+     * material/Damage plasticity": an error of a value derived from them
+     * names them); @p unit_length (m) scales the default penalty. Every
+     * value not given is listed by derived_values().
      */
     std::unique_ptr<InterfaceLaw>
     make_splitting_law(const SplittingSettings &settings,
                        const BrickMaterial     &brick,
+                       const std::string       &brick_section,
                        const double             unit_length);
   } // namespace brickwork
 } // namespace masonry
