@@ -7,6 +7,7 @@
  */
 #include <masonry/brickwork/laws/damage_plasticity.h>
 #include <masonry/core/parameters.h>
+#include <masonry/core/plugins.h>
 
 #include <sstream>
 #include <string>
@@ -276,6 +277,7 @@ namespace masonry
     void
     DamagePlasticityBrick::parse_parameters(dealii::ParameterHandler &prm)
     {
+      section      = plugins::current_parse_path();
       E            = prm.get_double("Young's modulus");
       nu           = prm.get_double("Poisson's ratio");
       f_c          = prm.get_double("Compressive strength");
@@ -443,7 +445,12 @@ namespace masonry
           m << "is too small for elements of " << point.characteristic_length
             << " m: the tension softening needs l < 2 G_f E0 / f_t^2 = "
             << l_max << " m (refine the mesh or raise the energy)";
-          AssertThrow(false, ExcParameter("Tensile fracture energy", m.str()));
+          // (checked while running, outside any parse path: the full path
+          // tells the brick's entry from the mortar's)
+          AssertThrow(false,
+                      ExcParameter((section.empty() ? "" : section + "/") +
+                                     "Tensile fracture energy",
+                                   m.str()));
         }
     }
 

@@ -82,6 +82,8 @@
 
 #include <masonry/brickwork/brick_material.h>
 
+#include <string>
+
 namespace masonry
 {
   namespace brickwork
@@ -462,8 +464,12 @@ namespace masonry
        * definition' = normalised (f_c is then derived from it), else 0. */
       double f_normalised = 0;
       double G_c = 20000, b_c = 0.7, f_t = 2e6, G_f = 80, b_t = 0;
-      double rho = 1.16, d_max = 0.99, mu_visc = 0;
-      double alpha = 0, lambda = 0, mu = 0;
+      /** The full path of the law's subsection (parse_parameters()), so
+       * that a check made while running names its entries ("Mortar
+       * material/Mortar/..."); empty for a law set up in code. */
+      std::string section;
+      double      rho = 1.16, d_max = 0.99, mu_visc = 0;
+      double      alpha = 0, lambda = 0, mu = 0;
       /** `Cracked compression softening' c (0: off). */
       double c_cracked = 0;
       /** `Cracked compression residual ratio': the lower bound of beta. */
