@@ -582,7 +582,14 @@ namespace masonry
               output();
             controller->grow(outcome.iterations);
             if (every > 0 && controller->n_steps() % every == 0)
-              save("running");
+              {
+                save("running");
+                // a run resumed from here starts without the factorisation
+                // that the next step's chord corrections would use: so
+                // does this one, and the two stay the same to round-off
+                if (settings.newton.chord_across_steps)
+                  solver.drop_factors();
+              }
             end = controller->check_interrupted(curve);
             // a batch system's time limit or Ctrl-C: stop here, with the
             // checkpoint written below

@@ -123,6 +123,12 @@ namespace masonry
       virtual void
       clear();
 
+      /** Let the kept factorisation go (not the analysis of the matrix's
+       * structure): the next solve factorises, as the first one after a
+       * resume from a checkpoint does. Nothing by default. */
+      virtual void
+      drop_factors();
+
       /** Write or read what changes the later solves (a fallback that
        * happened) and the counters. */
       template <class Archive>

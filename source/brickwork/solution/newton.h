@@ -46,6 +46,9 @@ namespace masonry
          * factorisation while each leaves at most this fraction (`Newton
          * chord contraction'; 0: none). */
         double chord_contraction = 0.1;
+        /** A step starts with chord corrections with the factorisation kept
+         * from the step before (`Newton chord across steps'). */
+        bool chord_across_steps = false;
 
         /** Declare the entries in the present subsection. */
         static void

@@ -104,6 +104,12 @@ namespace masonry
         factorised = is_initial = false;
       }
 
+      void
+      DirectSolver::drop_factors()
+      {
+        factorised = is_initial = false;
+      }
+
       bool
       DirectSolver::has_kept_factors() const
       {

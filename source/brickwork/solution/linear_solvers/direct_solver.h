@@ -47,6 +47,9 @@ namespace masonry
         void
         clear() override;
 
+        void
+        drop_factors() override;
+
         bool
         has_kept_factors() const override;
 

@@ -92,6 +92,10 @@ namespace masonry
     LinearSolver::clear()
     {}
 
+    void
+    LinearSolver::drop_factors()
+    {}
+
     bool
     LinearSolver::fallen_back() const
     {
