@@ -15,7 +15,6 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 rm -rf "$work"
 mkdir -p "$work"
 runs=()
-standalone=()
 # the examples, and a run without an optimum: the settling arch at 2 cm
 # thickness cannot stand (status `mechanism'), its page shows the blocks
 # at rest with the prescribed settlement
@@ -44,12 +43,6 @@ for prm in "${cases[@]}"; do
     tail -5 "$work/$name.log"
     exit 1
   fi
-  # a wallette run whose masonry writes no page yet: the installed generator
-  # writes it from the run's files
-  if [[ $name == wallette-* ]] && ! grep -q '"report.html"' "$work/$name/summary.json"; then
-    /usr/bin/python3 "$(dirname "$masonry")/share/masonry/scripts/wallette_report.py" "$work/$name"
-    standalone+=(--standalone "$work/$name")
-  fi
   runs+=("$work/$name")
 done
-/usr/bin/python3 "$here/report_browser.py" "${standalone[@]}" "${runs[@]}"
+/usr/bin/python3 "$here/report_browser.py" "${runs[@]}"

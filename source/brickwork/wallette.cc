@@ -676,6 +676,8 @@ namespace masonry
         if (specimen.n_deleted > 0)
           pcout << ", " << specimen.n_deleted << " cells deleted";
         pcout << "\n";
+        for (auto &pp : plugins.postprocessors)
+          pp->after_summary(*view, summary);
       }
     } // namespace
 

@@ -113,6 +113,13 @@ namespace masonry
         virtual void
         finish(const ModelView &view, Json &summary);
 
+        /** After every postprocessor's finish() and the run's own entries of
+         * summary.json (status, steps, solver counters): for an output that
+         * reports the whole run from its files and @p summary (the report
+         * page). Nothing by default. */
+        virtual void
+        after_summary(const ModelView &view, const Json &summary);
+
         /** What to keep across a restart (written into the checkpoint). */
         virtual std::string
         save() const;

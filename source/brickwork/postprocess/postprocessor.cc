@@ -70,7 +70,7 @@ namespace masonry
       const char *
       Postprocessor::default_plugin()
       {
-        return "curve tables, fields, joint fields, curve plot";
+        return "curve tables, fields, joint fields, curve plot, report";
       }
 
       std::string
@@ -81,7 +81,8 @@ namespace masonry
                "outputs and summary.json use its curve). `fields' and "
                "`joint fields' run only with `Write VTU = true', `curve "
                "plot' only with `Write plot = true'; `Write CalculiX input "
-               "= true' adds `calculix'. Postprocessors of an `Additional "
+               "= true' adds `calculix'. `report' needs the fields for its 3D view "
+               "(it draws the curve and tables without them). Postprocessors of an `Additional "
                "shared libraries' file can be listed too.";
       }
 
@@ -115,6 +116,10 @@ namespace masonry
 
       void
       Postprocessor::finish(const ModelView &, Json &)
+      {}
+
+      void
+      Postprocessor::after_summary(const ModelView &, const Json &)
       {}
 
       std::string
