@@ -27,6 +27,7 @@
 #include <cmath>
 #include <iomanip>
 #include <sstream>
+#include <typeinfo>
 
 #include "assembly/regions.h"
 #include "postprocess/builtin.h"
@@ -489,8 +490,13 @@ namespace masonry
       void
       Wallette::save(const std::string &status)
       {
+        // each postprocessor's data behind the name of its class, so that
+        // a resumed run with another list is told apart even where the
+        // counts agree and the data are empty
         for (unsigned int i = 0; i < plugins.postprocessors.size(); ++i)
-          postprocessor_data[i] = plugins.postprocessors[i]->save();
+          postprocessor_data[i] =
+            std::string(typeid(*plugins.postprocessors[i]).name()) + '\n' +
+            plugins.postprocessors[i]->save();
         save_checkpoint(checkpoint_parts(), status, context);
       }
 
@@ -504,14 +510,22 @@ namespace masonry
             load_checkpoint(parts, context, postprocessors.size());
             u_converged = system.u;
             for (unsigned int i = 0; i < postprocessors.size(); ++i)
-              try
-                {
-                  postprocessors[i]->load(postprocessor_data[i]);
-                }
-              catch (const std::exception &e)
-                {
-                  AssertThrow(false, other_postprocessors(e.what()));
-                }
+              {
+                const std::string &data = postprocessor_data[i];
+                const std::size_t  end  = data.find('\n');
+                AssertThrow(end != std::string::npos &&
+                              data.compare(
+                                0, end, typeid(*postprocessors[i]).name()) == 0,
+                            other_postprocessors(""));
+                try
+                  {
+                    postprocessors[i]->load(data.substr(end + 1));
+                  }
+                catch (const std::exception &e)
+                  {
+                    AssertThrow(false, other_postprocessors(e.what()));
+                  }
+              }
             pcout << "Resumed from the checkpoint at step "
                   << controller->n_steps() << " (platen displacement "
                   << controller->applied() << " m)\n";

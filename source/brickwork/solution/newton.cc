@@ -114,7 +114,7 @@ namespace masonry
           "assemblies. The converged states meet the same `Newton "
           "tolerance', so they differ from those of false by what that "
           "tolerance lets through (the single cyclic example with 1e-8: cycle "
-          "peaks within 1e-7, 0.72 of the CPU time; the triple one with 1e-3: "
+          "peaks within 1e-7, 0.72-0.78 of the CPU time; the triple one with 1e-3: "
           "the peak within 2e-4, 0.84 of the CPU time; "
           "contrib/benchmarks/wallette_cyclic). The kept factorisation is "
           "let go at every checkpoint, so a run resumed from a checkpoint of "
