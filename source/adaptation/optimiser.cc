@@ -111,9 +111,6 @@ namespace masonry
       vertex_genes       = prm.get("Mesh genes") == "vertices";
     }
 
-    void
-    Optimiser::parse_parameters(dealii::ParameterHandler &)
-    {}
 
     bool
     Optimiser::active() const

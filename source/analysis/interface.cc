@@ -16,17 +16,7 @@ namespace masonry
       return "What this run computes.";
     }
 
-    void
-    Interface::declare_common_parameters(dealii::ParameterHandler &)
-    {}
 
-    void
-    Interface::parse_common_parameters(dealii::ParameterHandler &)
-    {}
-
-    void
-    Interface::parse_parameters(dealii::ParameterHandler &)
-    {}
 
     void
     Interface::setup(dealii::ParameterHandler &)

@@ -66,9 +66,6 @@ namespace masonry
                   ExcParameter("Density", "must be positive (kg/m^3)."));
     }
 
-    void
-    Interface::parse_parameters(dealii::ParameterHandler &)
-    {}
 
     const std::vector<Patch> &
     Interface::patches() const

@@ -92,9 +92,6 @@ namespace masonry
       check_tolerance_value = prm.get_double("Optimality check tolerance");
     }
 
-    void
-    Interface::parse_parameters(dealii::ParameterHandler &)
-    {}
 
     Solution
     Interface::solve_warm(const LinearProgram &lp, WarmStart &) const

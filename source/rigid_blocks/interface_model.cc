@@ -32,13 +32,7 @@ namespace masonry
              "the stress block.";
     }
 
-    void
-    InterfaceModel::declare_common_parameters(dealii::ParameterHandler &)
-    {}
 
-    void
-    InterfaceModel::parse_common_parameters(dealii::ParameterHandler &)
-    {}
 
     bool
     InterfaceModel::no_tension_no_sliding() const

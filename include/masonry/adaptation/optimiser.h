@@ -25,7 +25,7 @@ namespace masonry
      * in [0, 1]^n; the initial population contains a given point (the
      * uniform mesh), so the result is never worse than it.
      */
-    class Optimiser
+    class Optimiser : public plugins::InterfaceBase
     {
     public:
       /** Parameters live in `subsection Adaptation`. */
@@ -45,16 +45,10 @@ namespace masonry
       static void
       declare_common_parameters(dealii::ParameterHandler &prm);
 
-      /** Destructor. */
-      virtual ~Optimiser() = default;
-
       /** Read the shared entries. */
-      virtual void
-      parse_common_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_common_parameters(dealii::ParameterHandler &prm) override;
 
-      /** Read the optimiser's own subsection: nothing by default. */
-      virtual void
-      parse_parameters(dealii::ParameterHandler &prm);
 
       /** Whether this optimiser adapts at all (false for `none`). */
       virtual bool

@@ -20,7 +20,7 @@ namespace masonry
      * handler (at top level) so that it can create the plugins of other
      * subsystems it needs, then run().
      */
-    class Interface
+    class Interface : public plugins::InterfaceBase
     {
     public:
       /** Top level: the selection entry is `set Analysis = ...`. */
@@ -34,19 +34,7 @@ namespace masonry
       static std::string
       selection_documentation();
 
-      /** Entries shared by all analyses: none. */
-      static void
-      declare_common_parameters(dealii::ParameterHandler &prm);
 
-      virtual ~Interface() = default;
-
-      /** Read the shared entries: none. */
-      virtual void
-      parse_common_parameters(dealii::ParameterHandler &prm);
-
-      /** Read this analysis' own subsection. */
-      virtual void
-      parse_parameters(dealii::ParameterHandler &prm);
 
       /**
        * Create and parse the plugins of other subsystems this analysis uses;

@@ -43,7 +43,7 @@ namespace masonry
      * wallette that stands on z = 0 with its face on y = 0 and its end on
      * x = 0.
      */
-    class Bond
+    class Bond : public plugins::InterfaceBase
     {
     public:
       /** Parameters live in `subsection Bond`. */
@@ -56,18 +56,7 @@ namespace masonry
       /** Help text of the selection entry. */
       static std::string
       selection_documentation();
-      /** Entries shared by all bonds: none. */
-      static void
-      declare_common_parameters(dealii::ParameterHandler &prm);
 
-      virtual ~Bond() = default;
-
-      /** Read the shared entries: none. */
-      virtual void
-      parse_common_parameters(dealii::ParameterHandler &prm);
-      /** Read this bond's own subsection: nothing by default. */
-      virtual void
-      parse_parameters(dealii::ParameterHandler &prm);
 
       /** The enlarged bricks of a wallette of size @p size. */
       virtual std::vector<Box>

@@ -64,7 +64,7 @@ namespace masonry
      * damage_names(): largest values in curve.csv and summary.json, the
      * IMPL-EX damage error).
      */
-    class BrickMaterial : public PointLaw
+    class BrickMaterial : public PointLaw, public plugins::InterfaceBase
     {
     public:
       /** Parameters live in `subsection Brick material`. */
@@ -77,16 +77,7 @@ namespace masonry
       /** Help text of the selection entry. */
       static std::string
       selection_documentation();
-      /** Entries shared by all brick materials: none. */
-      static void
-      declare_common_parameters(dealii::ParameterHandler &prm);
 
-      /** Read the shared entries: none. */
-      virtual void
-      parse_common_parameters(dealii::ParameterHandler &prm);
-      /** Read this material's own subsection: nothing by default. */
-      virtual void
-      parse_parameters(dealii::ParameterHandler &prm);
 
       /**
        * Whether stress is a fixed linear function of strain: then the

@@ -52,7 +52,7 @@ namespace masonry
      * slips. Like a brick material, a law declares its own state
      * variables, elastic tangent and reported quantities.
      */
-    class InterfaceLaw : public PointLaw
+    class InterfaceLaw : public PointLaw, public plugins::InterfaceBase
     {
     public:
       /** Parameters live in `subsection Interface law`. */
@@ -70,11 +70,8 @@ namespace masonry
       declare_common_parameters(dealii::ParameterHandler &prm);
 
       /** Read the penalty stiffnesses. */
-      virtual void
-      parse_common_parameters(dealii::ParameterHandler &prm);
-      /** Read this law's own subsection: nothing by default. */
-      virtual void
-      parse_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_common_parameters(dealii::ParameterHandler &prm) override;
 
       /**
        * Traction @p t (Pa) and consistent tangent @p tangent (Pa/m) for the

@@ -53,7 +53,7 @@ namespace masonry
     };
 
     /** Solves matrix du = rhs for the Newton corrections. */
-    class LinearSolver
+    class LinearSolver : public plugins::InterfaceBase
     {
     public:
       using Matrix = dealii::TrilinosWrappers::SparseMatrix;
@@ -74,14 +74,9 @@ namespace masonry
       static void
       declare_common_parameters(dealii::ParameterHandler &prm);
 
-      virtual ~LinearSolver() = default;
-
       /** Read `Linear solver tolerance'. */
-      virtual void
-      parse_common_parameters(dealii::ParameterHandler &prm);
-      /** Read the solver's own entries: none by default. */
-      virtual void
-      parse_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_common_parameters(dealii::ParameterHandler &prm) override;
 
       /** Before the first solve: the DoFs of the matrices to come (AMG's
        * rigid modes) and where notes go. */

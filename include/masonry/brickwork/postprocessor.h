@@ -59,7 +59,7 @@ namespace masonry
        * a static declare_parameters() and one
        * MASONRY_REGISTER_WALLETTE_POSTPROCESSOR line.
        */
-      class Postprocessor
+      class Postprocessor : public plugins::InterfaceBase
       {
       public:
         /** Parameters live in `subsection Postprocess/Wallette`. */
@@ -74,18 +74,7 @@ namespace masonry
         /** Help text of the selection entry. */
         static std::string
         selection_documentation();
-        /** Entries shared by all postprocessors: none. */
-        static void
-        declare_common_parameters(dealii::ParameterHandler &prm);
 
-        virtual ~Postprocessor() = default;
-
-        /** Read the shared entries: none. */
-        virtual void
-        parse_common_parameters(dealii::ParameterHandler &prm);
-        /** Read this postprocessor's own subsection: nothing by default. */
-        virtual void
-        parse_parameters(dealii::ParameterHandler &prm);
 
         /** Before the first step of a run that starts from zero (the
          * curve holds the initial state). */

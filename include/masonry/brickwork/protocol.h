@@ -63,7 +63,7 @@ namespace masonry
      * is a rigid platen that moves along its direction by the protocol's
      * displacement.
      */
-    class Protocol
+    class Protocol : public plugins::InterfaceBase
     {
     public:
       /** The selection `set Protocol = ...' stands in `subsection
@@ -81,14 +81,9 @@ namespace masonry
       static void
       declare_common_parameters(dealii::ParameterHandler &prm);
 
-      virtual ~Protocol() = default;
-
       /** Read `Target strain' and `Platen speed'. */
-      virtual void
-      parse_common_parameters(dealii::ParameterHandler &prm);
-      /** Read the protocol's own entries: nothing by default. */
-      virtual void
-      parse_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_common_parameters(dealii::ParameterHandler &prm) override;
 
       /**
        * The wallette is @p height m high: turn the strains of the entries

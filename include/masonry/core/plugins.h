@@ -6,17 +6,18 @@
  * abstract interface class that names where its parameters live:
  *
  * @code
- * class Interface
+ * class Interface : public plugins::InterfaceBase
  * {
  * public:
+ *   // the family's descriptor: where its selection stands, its default
  *   static constexpr const char *registry_section = "Geometry model";
  *   static constexpr const char *registry_entry   = "Model name";
- *   virtual ~Interface() = default;
  *   static const char *default_plugin();             // the default selection
  *   static std::string selection_documentation();    // help text of the entry
+ *   // only where the family's plugins share entries (InterfaceBase's
+ *   // defaults declare and read none):
  *   static void declare_common_parameters(dealii::ParameterHandler &prm);
- *   virtual void parse_common_parameters(dealii::ParameterHandler &prm);
- *   virtual void parse_parameters(dealii::ParameterHandler &prm);
+ *   void parse_common_parameters(dealii::ParameterHandler &prm) override;
  *   ...
  * };
  * @endcode
@@ -125,6 +126,39 @@ namespace masonry
     /** The path most recently pushed by a ParsePathScope ("" at top level). */
     std::string
     current_parse_path();
+
+    /**
+     * The base of every plugin family's interface (as ASPECT's
+     * Plugins::InterfaceBase): a virtual destructor and the hooks that
+     * declare and read parameters, which do nothing unless a family or a
+     * plugin overrides them. A family's interface derives from it and adds
+     * its descriptor (`registry_section`, `registry_entry`,
+     * `default_plugin()`, `selection_documentation()`; see the top of this
+     * file); a plugin overrides parse_parameters() to read its own
+     * subsection.
+     */
+    class InterfaceBase
+    {
+    public:
+      virtual ~InterfaceBase() = default;
+
+      /** Entries shared by every plugin of the family, declared in the
+       * family's subsection: none by default. A family that has some
+       * declares a static function of this name in its interface. */
+      static void
+      declare_common_parameters(dealii::ParameterHandler &)
+      {}
+
+      /** Read the shared entries: nothing by default. */
+      virtual void
+      parse_common_parameters(dealii::ParameterHandler &)
+      {}
+
+      /** Read the plugin's own entries: nothing by default. */
+      virtual void
+      parse_parameters(dealii::ParameterHandler &)
+      {}
+    };
 
     /**
      * A subsystem known to the registry: every subsystem with at least one

@@ -28,7 +28,7 @@ namespace masonry
      * parse_parameters() (calling set_patches(), which also checks the
      * thickness on them); patches() returns them.
      */
-    class Interface
+    class Interface : public plugins::InterfaceBase
     {
     public:
       /** The section: `subsection Geometry model`. */
@@ -49,18 +49,12 @@ namespace masonry
       static void
       declare_common_parameters(dealii::ParameterHandler &prm);
 
-      /** Destructor. */
-      virtual ~Interface() = default;
-
       /**
        * Read and check `Thickness` (must parse) and `Density` (> 0).
        */
-      virtual void
-      parse_common_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_common_parameters(dealii::ParameterHandler &prm) override;
 
-      /** Read the model's own subsection and build its patches. */
-      virtual void
-      parse_parameters(dealii::ParameterHandler &prm);
 
       /** The patches of the middle surface, built by parse_parameters(). */
       virtual const std::vector<Patch> &

@@ -137,7 +137,7 @@ namespace masonry
      * `subsection LP solver` and its own subsection
      * (`subsection LP solver/Clp`, ...).
      */
-    class Interface
+    class Interface : public plugins::InterfaceBase
     {
     public:
       /** Parameters live in `subsection LP solver`. */
@@ -159,15 +159,10 @@ namespace masonry
       static void
       declare_common_parameters(dealii::ParameterHandler &prm);
 
-      virtual ~Interface() = default;
-
       /** Read the shared entries. */
-      virtual void
-      parse_common_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_common_parameters(dealii::ParameterHandler &prm) override;
 
-      /** Read this back-end's own subsection: nothing by default. */
-      virtual void
-      parse_parameters(dealii::ParameterHandler &prm);
 
       /**
        * Solve @p lp. Never throws for infeasible or unbounded problems (see

@@ -37,7 +37,7 @@ namespace masonry
      * Base class of interface models. Create one with
      * `plugins::Registry<rigid_blocks::InterfaceModel>::create(prm)`.
      */
-    class InterfaceModel
+    class InterfaceModel : public plugins::InterfaceBase
     {
     public:
       /** Parameters live in `subsection Interface model`. */
@@ -50,20 +50,11 @@ namespace masonry
       /** Help text of the selection entry. */
       static std::string
       selection_documentation();
-      /** No shared entries. */
-      static void
-      declare_common_parameters(dealii::ParameterHandler &prm);
 
-      /** Destructor. */
-      virtual ~InterfaceModel() = default;
-
-      /** Nothing shared to read. */
-      virtual void
-      parse_common_parameters(dealii::ParameterHandler &prm);
 
       /** Read the model's own subsection. */
-      virtual void
-      parse_parameters(dealii::ParameterHandler &prm) = 0;
+      void
+      parse_parameters(dealii::ParameterHandler &prm) override = 0;
 
       /** The planes of the linearised yield surface. */
       virtual const std::vector<YieldPlane> &

@@ -30,17 +30,8 @@ namespace masonry
         return "How the brick and joint laws are integrated in a load step.";
       }
 
-      void
-      Integrator::declare_common_parameters(dealii::ParameterHandler &)
-      {}
 
-      void
-      Integrator::parse_common_parameters(dealii::ParameterHandler &)
-      {}
 
-      void
-      Integrator::parse_parameters(dealii::ParameterHandler &)
-      {}
     } // namespace model
   }   // namespace brickwork
 } // namespace masonry

@@ -27,7 +27,7 @@ namespace masonry
     namespace model
     {
       /** The integration of brick and joint laws within a step. */
-      class Integrator
+      class Integrator : public plugins::InterfaceBase
       {
       public:
         /** The selection `set Damage integration = ...' stands in
@@ -41,18 +41,7 @@ namespace masonry
         /** Help text of the selection entry. */
         static std::string
         selection_documentation();
-        /** Entries shared by the integrators: none. */
-        static void
-        declare_common_parameters(dealii::ParameterHandler &prm);
 
-        virtual ~Integrator() = default;
-
-        /** Read the shared entries: none. */
-        virtual void
-        parse_common_parameters(dealii::ParameterHandler &prm);
-        /** Read the integrator's own entries: none by default. */
-        virtual void
-        parse_parameters(dealii::ParameterHandler &prm);
 
         /** Pseudo-time ratio of this step to the last converged one (0: no
          * extrapolation, for example across a reversal). */

@@ -86,17 +86,7 @@ namespace masonry
                "shared libraries' file can be listed too.";
       }
 
-      void
-      Postprocessor::declare_common_parameters(dealii::ParameterHandler &)
-      {}
 
-      void
-      Postprocessor::parse_common_parameters(dealii::ParameterHandler &)
-      {}
-
-      void
-      Postprocessor::parse_parameters(dealii::ParameterHandler &)
-      {}
 
       void
       Postprocessor::start(const ModelView &)

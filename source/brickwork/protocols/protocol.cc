@@ -52,9 +52,6 @@ namespace masonry
       platen_speed  = positive_entry(prm, "Platen speed");
     }
 
-    void
-    Protocol::parse_parameters(dealii::ParameterHandler &)
-    {}
 
     unsigned int
     Protocol::cycles_per_amplitude() const

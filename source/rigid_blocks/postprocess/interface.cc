@@ -151,17 +151,7 @@ namespace masonry
                "`Additional shared libraries' file is listed by its name.";
       }
 
-      void
-      Interface::declare_common_parameters(dealii::ParameterHandler &)
-      {}
 
-      void
-      Interface::parse_common_parameters(dealii::ParameterHandler &)
-      {}
-
-      void
-      Interface::parse_parameters(dealii::ParameterHandler &)
-      {}
 
       std::vector<std::string>
       Interface::required_plugins() const

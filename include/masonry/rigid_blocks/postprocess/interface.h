@@ -279,7 +279,7 @@ namespace masonry
        * MPI rank once the LP has an optimum (and, for those that
        * writes_without_solution(), when it has none).
        */
-      class Interface
+      class Interface : public plugins::InterfaceBase
       {
       public:
         /** Where the list and the postprocessors' subsections live. */
@@ -295,19 +295,8 @@ namespace masonry
         /** Help text of the list. */
         static std::string
         selection_documentation();
-        /** Entries shared by all postprocessors: none. */
-        static void
-        declare_common_parameters(dealii::ParameterHandler &prm);
 
-        virtual ~Interface() = default;
 
-        /** Read the shared entries: none. */
-        virtual void
-        parse_common_parameters(dealii::ParameterHandler &prm);
-
-        /** Read this postprocessor's subsection (default: nothing). */
-        virtual void
-        parse_parameters(dealii::ParameterHandler &prm);
 
         /**
          * Postprocessors that must run before this one (their files are

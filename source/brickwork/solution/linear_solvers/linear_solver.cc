@@ -45,9 +45,6 @@ namespace masonry
       tolerance = positive_entry(prm, "Linear solver tolerance");
     }
 
-    void
-    LinearSolver::parse_parameters(dealii::ParameterHandler &)
-    {}
 
     void
     LinearSolver::initialize(const dealii::DoFHandler<3> &dofs,
