@@ -5,7 +5,14 @@
  * file, read back with deal.II's HDF5 wrapper, holds the prescribed platen
  * displacement −ε H at every node of the top face and zero at the bottom
  * (1e-7 of the platen displacement: DataOut stores its patches, and so the
- * HDF5 fields, in single precision, as in the VTU files).
+ * HDF5 fields, in single precision, as in the VTU files). The joints follow:
+ * interfaces.xdmf lists the three steps, and in interfaces_0002.h5 the bed
+ * faces' mean normal opening times the joint's normal stiffness (2.5e11 Pa/m,
+ * the elastic law's default) is the applied stress: the bed joint is the
+ * only path of the platen force F, its traction is k_n times the opening,
+ * and over a face of equal faces the opening at the centre is the mean of
+ * the bilinear opening, so k_n mean(opening) = -F / A (1e-6: the Newton
+ * tolerance).
  */
 #include <deal.II/base/hdf5.h>
 
@@ -61,6 +68,38 @@ main(int argc, char **argv)
     file.open_dataset("nodes").read<dealii::FullMatrix<double>>();
   const auto u =
     file.open_dataset("displacement").read<dealii::FullMatrix<double>>();
+  {
+    std::ifstream     joints_in("results/hdf5/interfaces.xdmf");
+    std::stringstream joints_text;
+    joints_text << joints_in.rdbuf();
+    const std::string joints  = joints_text.str();
+    unsigned int      n_steps = 0;
+    for (auto m = std::sregex_iterator(joints.begin(), joints.end(), time);
+         m != std::sregex_iterator();
+         ++m)
+      ++n_steps;
+    check(n_steps == 3 && joints.find("interfaces_0002.h5:/normal_opening") !=
+                            std::string::npos,
+          "interfaces.xdmf lists three steps, the last in interfaces_0002.h5");
+    dealii::HDF5::File joint_file("results/hdf5/interfaces_0002.h5",
+                                  dealii::HDF5::File::FileAccessMode::open);
+    const auto         opening =
+      joint_file.open_dataset("normal_opening").read<std::vector<double>>();
+    const auto type = joint_file.open_dataset("joint_type_bed0_head1_collar2")
+                        .read<std::vector<double>>();
+    double       sum = 0;
+    unsigned int n   = 0;
+    for (unsigned int i = 0; i < opening.size(); ++i)
+      if (type[i] == 0)
+        {
+          sum += opening[i];
+          ++n;
+        }
+    const double stress = s.at("peak_stress").get<double>();
+    check(n > 0 && n == type.size() &&
+            relative(-2.5e11 * sum / n, stress) < 1e-6,
+          "HDF5 joints: k_n x mean bed opening = -applied stress (1e-6)");
+  }
   const double platen = -strain * H;
   unsigned int n_top = 0, n_bottom = 0;
   double       error = 0;

@@ -86,6 +86,22 @@ def read_vtu_pieces(path):
             {k: np.concatenate(v) for k, v in data.items()})
 
 
+def xdmf_files(path):
+    """(timestep, HDF5 file) of every grid of an XDMF time series (masonry's
+    interfaces.xdmf); [] without the file."""
+    if not os.path.exists(path):
+        return []
+    steps = []
+    for grid in ET.parse(path).getroot().iter("Grid"):
+        if grid.get("GridType") == "Collection":
+            continue
+        time = grid.find("Time")
+        name = grid.find("Geometry").find("DataItem").text.strip().split(":")[0]
+        steps.append((float(time.get("Value")) if time is not None else 0.0,
+                      os.path.join(os.path.dirname(path), name)))
+    return steps
+
+
 def read_xdmf_steps(path):
     """(timestep, reader) of every grid of deal.II's solution.xdmf; the
     reader gives points, hexahedra and point data from its HDF5 file."""
@@ -202,13 +218,21 @@ def step_data(points, cells, data, positions):
 
 
 def joints_data(path, points, data, positions):
-    """The joint faces of interfaces_NNNN.vtu that open more than
+    """The joint faces of interfaces_NNNN.vtu (or .h5) that open more than
     OPEN_JOINT, with the displacement of the cells' vertices there (the
     mean of the two sides)."""
-    import meshio
-    m = meshio.read(path)
-    quads = np.concatenate([c.data for c in m.cells if c.type == "quad"]) if m.cells else np.zeros((0, 4), int)
-    opening = np.asarray(m.cell_data.get("normal_opening", [np.zeros(len(quads))])[0]).reshape(-1)
+    if path.endswith(".h5"):
+        import h5py
+        with h5py.File(path, "r") as h:
+            joint_points = np.array(h["nodes"])
+            quads = np.array(h["cells"]).reshape(-1, 4)
+            opening = np.array(h["normal_opening"]).reshape(-1)
+    else:
+        import meshio
+        m = meshio.read(path)
+        joint_points = m.points
+        quads = np.concatenate([c.data for c in m.cells if c.type == "quad"]) if m.cells else np.zeros((0, 4), int)
+        opening = np.asarray(m.cell_data.get("normal_opening", [np.zeros(len(quads))])[0]).reshape(-1)
     open_ = np.nonzero(opening > OPEN_JOINT)[0]
     u = data.get("displacement", np.zeros((len(points), 3))).reshape(len(points), -1)[:, :3]
     keys = np.round(points / positions.scale).astype(np.int64)
@@ -219,9 +243,9 @@ def joints_data(path, points, data, positions):
     mean /= np.bincount(vertex)[:, None]
     lookup = {tuple(k): vertex[i] for i, k in enumerate(keys)}
     corners = quads[open_].reshape(-1)
-    where = positions.ids(m.points[corners])
+    where = positions.ids(joint_points[corners])
     d = [mean[lookup[tuple(k)]] if tuple(k) in lookup else np.zeros(3)
-         for k in np.round(m.points[corners] / positions.scale).astype(np.int64)]
+         for k in np.round(joint_points[corners] / positions.scale).astype(np.int64)]
     d = np.round(np.array(d).reshape(-1, 3) / DISPLACEMENT_UNIT).astype(np.int64)
     return {"v": where, "u": d.reshape(-1).tolist(), "opening": np.round(opening[open_], 9).tolist(),
             "n_joints": int(len(quads))}
@@ -240,8 +264,11 @@ def page_data(directory, summary):
         fields = [(t, (lambda f=f: read_vtu_pieces(f))) for t, f in collection(os.path.join(directory, "solution.pvd"))]
     elif os.path.exists(os.path.join(directory, "solution.xdmf")):
         fields = read_xdmf_steps(os.path.join(directory, "solution.xdmf"))
-    joints = dict(collection(os.path.join(directory, "interfaces.pvd")))
-    joint_files = collection(os.path.join(directory, "interfaces.pvd"))
+    if os.path.exists(os.path.join(directory, "interfaces.pvd")):
+        joint_files = collection(os.path.join(directory, "interfaces.pvd"))
+    else:
+        joint_files = xdmf_files(os.path.join(directory, "interfaces.xdmf"))
+    joints = dict(joint_files)
     if len(fields) > MAX_STEPS:
         pick = sorted(set(np.linspace(0, len(fields) - 1, MAX_STEPS).round().astype(int)))
         fields = [fields[k] for k in pick]

@@ -1,6 +1,12 @@
+#include <masonry/core/output_directory.h>
+#include <masonry/core/output_file.h>
 #include <masonry/core/vtu_grid.h>
 
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/hdf5.h>
+
 #include <iomanip>
+#include <sstream>
 
 namespace masonry
 {
@@ -72,5 +78,110 @@ namespace masonry
         out << "</PointData>\n";
       }
     out << "</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+  }
+
+  void
+  VtuGrid::write_hdf5(const std::string &path) const
+  {
+    using dealii::HDF5::File;
+    const hsize_t n_points = points.size();
+    const hsize_t n_cells  = connectivity.size() / nodes_per_cell;
+    StagedFile    staged(path);
+    try
+      {
+        // the file is closed when it goes out of scope, before the rename
+        File file(staged.temporary_name(), File::FileAccessMode::create);
+        std::vector<double> xyz;
+        xyz.reserve(3 * n_points);
+        for (const auto &x : points)
+          xyz.insert(xyz.end(), {x[0], x[1], x[2]});
+        file.create_dataset<double>("nodes", {n_points, 3}).write(xyz);
+        file.create_dataset<unsigned int>("cells", {n_cells, nodes_per_cell})
+          .write(connectivity);
+        for (const auto &[name, values] : integer_cell_data)
+          file.create_dataset<int>(name, {n_cells}).write(values);
+        for (const auto &[name, values] : cell_data)
+          file.create_dataset<double>(name, {n_cells}).write(values);
+        for (const auto &[name, values] : point_vectors)
+          {
+            xyz.clear();
+            for (const auto &v : values)
+              xyz.insert(xyz.end(), {v[0], v[1], v[2]});
+            file.create_dataset<double>(name, {n_points, 3}).write(xyz);
+          }
+      }
+    catch (const std::exception &)
+      {
+        const std::string::size_type slash = path.rfind('/');
+        const std::string            directory =
+          slash == std::string::npos ? "." : path.substr(0, slash);
+        throw dealii::ExcMessage(write_error(
+          path, likely_write_reason(directory, "the HDF5 library failed")));
+      }
+    staged.commit();
+  }
+
+  std::string
+  VtuGrid::xdmf_grid(const std::string &h5, const double time) const
+  {
+    const unsigned int n_points = points.size();
+    const unsigned int n_cells  = connectivity.size() / nodes_per_cell;
+    const char *const  topology = cell_type == 12 ? "Hexahedron" :
+                                  cell_type == 9  ? "Quadrilateral" :
+                                  cell_type == 5  ? "Triangle" :
+                                                    "Polyvertex";
+    std::ostringstream out;
+    out << std::setprecision(17);
+    const auto item = [&](const std::string &dimensions,
+                          const char        *type,
+                          const std::string &dataset) {
+      out << "          <DataItem Dimensions=\"" << dimensions
+          << "\" NumberType=\"" << type << "\""
+          << (std::string(type) == "Float" ? " Precision=\"8\"" : "")
+          << " Format=\"HDF\">" << h5 << ":/" << dataset << "</DataItem>\n";
+    };
+    out << "      <Grid Name=\"mesh\" GridType=\"Uniform\">\n"
+        << "        <Time Value=\"" << time << "\"/>\n"
+        << "        <Geometry GeometryType=\"XYZ\">\n";
+    item(std::to_string(n_points) + " 3", "Float", "nodes");
+    out << "        </Geometry>\n"
+        << "        <Topology TopologyType=\"" << topology
+        << "\" NumberOfElements=\"" << n_cells << "\">\n";
+    item(std::to_string(n_cells) + " " + std::to_string(nodes_per_cell),
+         "UInt",
+         "cells");
+    out << "        </Topology>\n";
+    const auto attribute = [&](const std::string &name,
+                               const char        *kind,
+                               const char        *center,
+                               const std::string &dimensions,
+                               const char        *type) {
+      out << "        <Attribute Name=\"" << name << "\" AttributeType=\""
+          << kind << "\" Center=\"" << center << "\">\n";
+      item(dimensions, type, name);
+      out << "        </Attribute>\n";
+    };
+    for (const auto &data : integer_cell_data)
+      attribute(data.first, "Scalar", "Cell", std::to_string(n_cells), "Int");
+    for (const auto &data : cell_data)
+      attribute(data.first, "Scalar", "Cell", std::to_string(n_cells), "Float");
+    for (const auto &data : point_vectors)
+      attribute(
+        data.first, "Vector", "Node", std::to_string(n_points) + " 3", "Float");
+    out << "      </Grid>\n";
+    return out.str();
+  }
+
+  void
+  write_xdmf_series(std::ostream &out, const std::vector<std::string> &grids)
+  {
+    out << "<?xml version=\"1.0\" ?>\n"
+        << "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
+        << "<Xdmf Version=\"2.0\">\n  <Domain>\n"
+        << "    <Grid Name=\"CellTime\" GridType=\"Collection\" "
+           "CollectionType=\"Temporal\">\n";
+    for (const auto &grid : grids)
+      out << grid;
+    out << "    </Grid>\n  </Domain>\n</Xdmf>\n";
   }
 } // namespace masonry

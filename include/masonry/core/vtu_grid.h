@@ -1,9 +1,9 @@
 /**
  * @file
- * The project's one VTU writer for grids that are not a deal.II mesh: the
+ * The project's one writer for grids that are not a deal.II mesh: the
  * rigid blocks and their interfaces, the joints of a wallette (one
- * quadrilateral per face pair). Fields on deal.II meshes go through
- * deal.II's DataOut.
+ * quadrilateral per face pair), as ASCII VTU or as HDF5 with an XDMF time
+ * series. Fields on deal.II meshes go through deal.II's DataOut.
  *
  * Why not deal.II's DataOutBase::write_vtu(): in deal.II 9.4 it writes
  * points and data as Float32 only (7 digits; these files have 10), it has
@@ -11,7 +11,8 @@
  * a DataOutBase::Patch has the same number of subdivisions in every
  * direction (a block is k × k × 1 hexahedra: curved in u and v, straight
  * across the thickness). ParaView, meshio and users' scripts read these
- * ASCII files.
+ * ASCII files. deal.II's XDMFEntry has point data only, so the XDMF grids
+ * with cell data are written here too.
  */
 #ifndef masonry_core_vtu_grid_h
 #define masonry_core_vtu_grid_h
@@ -47,7 +48,32 @@ namespace masonry
     /** Write the grid as an ASCII VTU file, 10 significant digits. */
     void
     write(std::ostream &out) const;
+
+    /**
+     * Write the grid as the HDF5 file @p path (double precision): datasets
+     * `nodes` (points x 3, m), `cells` (cells x nodes_per_cell, point
+     * indices from 0), one dataset per cell data (one value per cell) and
+     * one per point vector (points x 3). The file is whole or absent: an
+     * error of the HDF5 library throws an ExcMessage naming @p path.
+     */
+    void
+    write_hdf5(const std::string &path) const;
+
+    /**
+     * The XDMF `<Grid>` element (Xdmf 2) of this grid written by
+     * write_hdf5() to @p h5 (a name relative to the XDMF file) at time
+     * @p time, for a temporal collection written by write_xdmf_series().
+     */
+    std::string
+    xdmf_grid(const std::string &h5, const double time) const;
   };
+
+  /**
+   * Write an XDMF temporal collection of the grids @p grids (each from
+   * VtuGrid::xdmf_grid()) to @p out; ParaView opens it with its XDMF reader.
+   */
+  void
+  write_xdmf_series(std::ostream &out, const std::vector<std::string> &grids);
 } // namespace masonry
 
 #endif

@@ -3,7 +3,8 @@
  * The joint fields: one quadrilateral per face pair with the quantities the
  * interface law reports (averaged over the face's points), the normal
  * opening and the slip at its centre (m) and the joint type, as a VTU time
- * series (interfaces.pvd).
+ * series (interfaces.pvd) or, with `Output format = hdf5', HDF5 + XDMF
+ * (interfaces.xdmf).
  */
 #include <masonry/core/output_directory.h>
 #include <masonry/core/output_file.h>
@@ -11,7 +12,6 @@
 
 #include <deal.II/base/data_out_base.h>
 
-#include <iomanip>
 #include <sstream>
 
 #include "builtin.h"
@@ -26,7 +26,8 @@ namespace masonry
 
       namespace
       {
-        /** interfaces.pvd and interfaces_NNNN.vtu. */
+        /** interfaces.pvd and interfaces_NNNN.vtu, or interfaces.xdmf and
+         * interfaces_NNNN.h5. */
         class JointFields : public Postprocessor
         {
         public:
@@ -44,7 +45,7 @@ namespace masonry
           {
             std::ostringstream out;
             out << std::setprecision(17);
-            for (const auto &entry : pvd)
+            for (const auto &entry : steps)
               out << entry.first << " " << entry.second << "\n";
             return out.str();
           }
@@ -52,12 +53,12 @@ namespace masonry
           void
           load(const std::string &data) override
           {
-            pvd.clear();
+            steps.clear();
             std::istringstream in(data);
             double             time;
             std::string        file;
             while (in >> time >> file)
-              pvd.emplace_back(time, file);
+              steps.emplace_back(time, file);
           }
 
         private:
@@ -68,7 +69,7 @@ namespace masonry
                       std::vector<std::string> &names) const;
 
           /** The steps written: (time, file). */
-          std::vector<std::pair<double, std::string>> pvd;
+          std::vector<std::pair<double, std::string>> steps;
         };
 
         std::vector<std::vector<double>>
@@ -145,12 +146,13 @@ namespace masonry
           std::vector<std::string>               names;
           const std::vector<std::vector<double>> values =
             face_values(view, names);
-          std::ostringstream name;
-          name << "interfaces_" << std::setw(4) << std::setfill('0') << step
-               << ".vtu";
-          const std::string file = view.context.output.file(name.str());
-          if (pvd.empty() || pvd.back().second != name.str())
-            pvd.emplace_back(time, name.str());
+          const bool        hdf5 = view.settings.output.hdf5;
+          const std::string name = "interfaces_" +
+                                   Utilities::int_to_string(step, 4) +
+                                   (hdf5 ? ".h5" : ".vtu");
+          const std::string file = view.context.output.file(name);
+          if (steps.empty() || steps.back().second != name)
+            steps.emplace_back(time, name);
           if (Utilities::MPI::this_mpi_process(view.system.comm) != 0)
             return;
           // one quadrilateral per face pair, the values as cell data
@@ -167,11 +169,31 @@ namespace masonry
               }
           for (unsigned int k = 0; k < names.size(); ++k)
             grid.cell_data.emplace_back(names[k], values[k]);
+          if (hdf5)
+            {
+              grid.write_hdf5(file);
+              // the joints and their quantities are the same every step,
+              // so the grid describes the earlier steps' files too (a
+              // resumed run lists the whole run)
+              std::vector<std::string> grids;
+              for (const auto &[t, h5] : steps)
+                if (h5.size() > 3 && h5.substr(h5.size() - 3) == ".h5")
+                  grids.push_back(grid.xdmf_grid(h5, t));
+              OutputFile xdmf(view.context.output.file("interfaces.xdmf"));
+              write_xdmf_series(xdmf, grids);
+              xdmf.close();
+              return;
+            }
           OutputFile out(file);
           grid.write(out);
           out.close();
+          std::vector<std::pair<double, std::string>> vtu;
+          for (const auto &entry : steps)
+            if (entry.second.size() > 4 &&
+                entry.second.substr(entry.second.size() - 4) == ".vtu")
+              vtu.push_back(entry);
           OutputFile pvd_out(view.context.output.file("interfaces.pvd"));
-          DataOutBase::write_pvd_record(pvd_out, pvd);
+          DataOutBase::write_pvd_record(pvd_out, vtu);
           pvd_out.close();
         }
       } // namespace
@@ -183,4 +205,4 @@ namespace masonry
 MASONRY_REGISTER_WALLETTE_POSTPROCESSOR(
   masonry::brickwork::postprocess::JointFields,
   "joint fields",
-  "The joints every `Output interval' steps: one quadrilateral per face pair with the quantities the interface law reports, the normal opening and the slip at its centre (m) and the joint type, as interfaces.pvd with interfaces_NNNN.vtu. A resumed run lists the steps of the whole run.")
+  "The joints every `Output interval' steps: one quadrilateral per face pair with the quantities the interface law reports, the normal opening and the slip at its centre (m) and the joint type, as interfaces.pvd with interfaces_NNNN.vtu, or with `Output format = hdf5' as interfaces.xdmf with interfaces_NNNN.h5 (double precision). A resumed run lists the steps of the whole run.")

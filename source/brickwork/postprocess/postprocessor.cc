@@ -31,13 +31,13 @@ namespace masonry
         "Output format",
         "vtu",
         Selection("vtu|hdf5"),
-        "Format of the brick fields when `Write VTU' is true: `vtu' "
+        "Format of the brick and joint fields when `Write VTU' is true: `vtu' "
         "writes solution.pvd with solution_NNNN.pvtu and one .vtu per "
         "rank; `hdf5' writes solution.xdmf with one solution_NNNN.h5 per "
         "output step (mesh and fields, written in parallel by all ranks; "
         "open solution.xdmf in ParaView with the XDMF reader). The "
-        "interfaces are written as interfaces.pvd / interfaces_NNNN.vtu in "
-        "both cases.");
+        "interfaces follow: interfaces.pvd with interfaces_NNNN.vtu, or "
+        "interfaces.xdmf with interfaces_NNNN.h5.");
       prm.declare_entry("Write plot",
                         "true",
                         Bool(),
