@@ -12,6 +12,7 @@
 
 #include <deal.II/base/data_out_base.h>
 
+#include <iomanip>
 #include <sstream>
 
 #include "builtin.h"
