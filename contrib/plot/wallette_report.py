@@ -86,26 +86,28 @@ def read_vtu_pieces(path):
             {k: np.concatenate(v) for k, v in data.items()})
 
 
+def xdmf_grids(path):
+    """(timestep, grid element) of every grid of an XDMF time series."""
+    for grid in ET.parse(path).getroot().iter("Grid"):
+        if grid.get("GridType") == "Collection":
+            continue
+        time = grid.find("Time")
+        yield (float(time.get("Value")) if time is not None else 0.0), grid
+
+
 def xdmf_files(path):
     """(timestep, HDF5 file) of every grid of an XDMF time series (masonry's
     interfaces.xdmf); [] without the file."""
     if not os.path.exists(path):
         return []
-    steps = []
-    for grid in ET.parse(path).getroot().iter("Grid"):
-        if grid.get("GridType") == "Collection":
-            continue
-        time = grid.find("Time")
-        name = grid.find("Geometry").find("DataItem").text.strip().split(":")[0]
-        steps.append((float(time.get("Value")) if time is not None else 0.0,
-                      os.path.join(os.path.dirname(path), name)))
-    return steps
+    return [(t, os.path.join(os.path.dirname(path),
+                             grid.find("Geometry").find("DataItem").text.strip().split(":")[0]))
+            for t, grid in xdmf_grids(path)]
 
 
 def read_xdmf_steps(path):
     """(timestep, reader) of every grid of deal.II's solution.xdmf; the
     reader gives points, hexahedra and point data from its HDF5 file."""
-    root = ET.parse(path).getroot()
     steps = []
     directory = os.path.dirname(path)
 
@@ -114,11 +116,7 @@ def read_xdmf_steps(path):
         name, dataset = text.split(":")
         return os.path.join(directory, name), dataset
 
-    for grid in root.iter("Grid"):
-        if grid.get("GridType") == "Collection":
-            continue
-        time = grid.find("Time")
-        t = float(time.get("Value")) if time is not None else 0.0
+    for t, grid in xdmf_grids(path):
 
         def reader(grid=grid):
             import h5py

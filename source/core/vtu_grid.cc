@@ -5,6 +5,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/hdf5.h>
 
+#include <filesystem>
 #include <iomanip>
 #include <sstream>
 
@@ -112,11 +113,12 @@ namespace masonry
       }
     catch (const std::exception &)
       {
-        const std::string::size_type slash = path.rfind('/');
-        const std::string            directory =
-          slash == std::string::npos ? "." : path.substr(0, slash);
-        throw dealii::ExcMessage(write_error(
-          path, likely_write_reason(directory, "the HDF5 library failed")));
+        const std::string directory =
+          std::filesystem::path(path).parent_path().string();
+        throw dealii::ExcMessage(
+          write_error(path,
+                      likely_write_reason(directory.empty() ? "." : directory,
+                                          "the HDF5 library failed")));
       }
     staged.commit();
   }
@@ -126,10 +128,11 @@ namespace masonry
   {
     const unsigned int n_points = points.size();
     const unsigned int n_cells  = connectivity.size() / nodes_per_cell;
-    const char *const  topology = cell_type == 12 ? "Hexahedron" :
-                                  cell_type == 9  ? "Quadrilateral" :
-                                  cell_type == 5  ? "Triangle" :
-                                                    "Polyvertex";
+    AssertThrow(cell_type == 12 || cell_type == 9,
+                dealii::ExcMessage("XDMF grids of hexahedra (VTK type 12) "
+                                   "or quadrilaterals (9) only"));
+    const char *const topology =
+      cell_type == 12 ? "Hexahedron" : "Quadrilateral";
     std::ostringstream out;
     out << std::setprecision(17);
     const auto item = [&](const std::string &dimensions,
