@@ -185,11 +185,12 @@ namespace brickwork_tests
   using vault_tests::relative;
   using vault_tests::run;
 
-  /** The columns of results/NAME/curve.csv, row by row. */
+  /** The columns of results/NAME/FILE (a CSV file of numbers with one
+   * header line), row by row. */
   inline std::vector<std::vector<double>>
-  curve(const std::string &name)
+  table(const std::string &name, const std::string &file)
   {
-    std::ifstream                    in("results/" + name + "/curve.csv");
+    std::ifstream                    in("results/" + name + "/" + file);
     std::string                      line;
     std::vector<std::vector<double>> rows;
     std::getline(in, line); // header
@@ -203,6 +204,13 @@ namespace brickwork_tests
         rows.push_back(row);
       }
     return rows;
+  }
+
+  /** The columns of results/NAME/curve.csv, row by row. */
+  inline std::vector<std::vector<double>>
+  curve(const std::string &name)
+  {
+    return table(name, "curve.csv");
   }
   /**
    * The numbers N of the lines `Step N ...' of a log that follow a line that

@@ -405,9 +405,18 @@ namespace masonry
         system.last_increment -= u_converged;
         u_converged = system.u;
         controller->accept(step, outcome.reaction);
-        unsigned int       faded   = 0;
-        const unsigned int removed = delete_cells(
-          settings.deletion, joints, material, bricks, system, specimen, faded);
+        unsigned int       faded = 0;
+        const DeletionStep after{controller->n_steps(),
+                                 step.leg.cycle,
+                                 step.leg.unloading};
+        const unsigned int removed = delete_cells(settings.deletion,
+                                                  joints,
+                                                  material,
+                                                  bricks,
+                                                  system,
+                                                  specimen,
+                                                  after,
+                                                  faded);
         // the deleted cells' DOFs are fixed from now on: no extrapolation
         // across the change of the structure
         if (removed > 0)

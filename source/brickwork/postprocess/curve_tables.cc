@@ -2,8 +2,9 @@
  * @file
  * The curve and cycle tables: curve.csv (one line per converged step,
  * written as the run goes), cycles.csv and envelope.csv (cyclic protocol),
- * and the curve's entries of summary.json (peak stress, strain at peak,
- * initial modulus, gauge, work, cycles).
+ * the deleted cells (deletions.csv, with element deletion on) and the
+ * curve's entries of summary.json (peak stress, strain at peak, initial
+ * modulus, gauge, work, cycles).
  */
 #include <masonry/core/output_directory.h>
 #include <masonry/core/output_file.h>
@@ -157,6 +158,8 @@ namespace masonry
                                      0.;
             if (view.protocol.is_cyclic())
               write_cycles(view, modulus, summary);
+            if (view.settings.deletion.deletion_strain > 0)
+              write_deletions(view);
             write_summary(view, modulus, summary);
           }
 
@@ -274,6 +277,33 @@ namespace masonry
             summary["cycles"] = list;
           }
 
+          /** deletions.csv: every deleted cell, in the order they went,
+           * with what it carried when it went. */
+          void
+          write_deletions(const ModelView &view) const
+          {
+            view.context.output.file("deletions.csv");
+            if (dealii::Utilities::MPI::this_mpi_process(view.system.comm) != 0)
+              return;
+            OutputFile out(view.context.output.path() + "deletions.csv");
+            out << std::setprecision(12)
+                << "step,cycle,unloading,cell,region,x_m,y_m,z_m,"
+                   "largest_principal_strain,stress_xx_Pa,stress_yy_Pa,"
+                   "stress_zz_Pa,stress_xy_Pa,stress_yz_Pa,stress_xz_Pa\n";
+            for (const auto &d : view.specimen.deletions)
+              {
+                out << d.step << "," << d.cycle << "," << d.unloading << ","
+                    << d.cell << "," << int(d.region);
+                for (const double x : d.centre)
+                  out << "," << x;
+                out << "," << d.strain;
+                for (const double s : d.stress)
+                  out << "," << s;
+                out << "\n";
+              }
+            out.close();
+          }
+
           void
           write_summary(const ModelView &view,
                         const double     modulus,
@@ -326,4 +356,4 @@ namespace masonry
 MASONRY_REGISTER_WALLETTE_POSTPROCESSOR(
   masonry::brickwork::postprocess::CurveTables,
   "curve tables",
-  "curve.csv (one line per converged step: displacement in m, strain, force in N, stress in Pa, Newton iterations, largest joint damage, gauge strain, cycle, unloading, deleted cells, largest brick damages), cycles.csv and envelope.csv (cyclic protocol) and the curve's entries of summary.json (peak_stress in Pa, strain_at_peak, initial_modulus in Pa, final_stress, external_work in J, cycles).")
+  "curve.csv (one line per converged step: displacement in m, strain, force in N, stress in Pa, Newton iterations, largest joint damage, gauge strain, cycle, unloading, deleted cells, largest brick damages), cycles.csv and envelope.csv (cyclic protocol), deletions.csv (with `Deletion strain' > 0: one line per deleted cell in the order they went: the step after which it went, its cycle and leg, cell index, region 0 unit 1 mortar, centre in m, the largest principal value of its cell-averaged strain and the six components of its cell-averaged stress in Pa at that step, its fade included) and the curve's entries of summary.json (peak_stress in Pa, strain_at_peak, initial_modulus in Pa, final_stress, external_work in J, cycles).")

@@ -254,6 +254,7 @@ namespace masonry
                    const PointStates      &bricks,
                    System                 &system,
                    Specimen               &specimen,
+                   const DeletionStep     &step,
                    unsigned int           &faded)
       {
         faded = 0;
@@ -273,8 +274,8 @@ namespace masonry
                                   quadrature,
                                   update_gradients | update_JxW_values);
         std::vector<SymmetricTensor<2, 3>>           eps(8);
-        std::vector<std::pair<double, unsigned int>> candidates, fades, splits,
-          shortenings;
+        std::vector<std::pair<double, unsigned int>> fades, splits, shortenings;
+        std::vector<DeletedCell>                     candidates;
         for (const auto &cell : system.dof_handler.active_cell_iterators())
           if (cell->is_locally_owned() &&
               !specimen.deleted[cell->active_cell_index()])
@@ -289,25 +290,47 @@ namespace masonry
                 crushing > 0 && specimen.split_shortening[c] >= 0;
               if (e1 <= settings.deletion_strain && !split)
                 continue;
+              // the cell as a candidate: what it carries (its cell-averaged
+              // stress) with it
+              auto candidate = [&]() {
+                const SymmetricTensor<2, 3> sigma = cell_stress(cell,
+                                                                system.ghosted,
+                                                                material,
+                                                                bricks,
+                                                                specimen,
+                                                                stress_values);
+                DeletedCell                 d;
+                d.cell           = c;
+                d.region         = specimen.cell_region[c];
+                d.strain         = e1;
+                const auto where = cell->center();
+                for (unsigned int i = 0; i < 3; ++i)
+                  d.centre[i] = where[i];
+                d.stress = {sigma[0][0],
+                            sigma[1][1],
+                            sigma[2][2],
+                            sigma[0][1],
+                            sigma[1][2],
+                            sigma[0][2]};
+                return std::make_pair(d, eigenvalues(sigma));
+              };
               // a cell that still carries more than `Deletion stress'
               // stays (its stress: the largest absolute principal value
               // of the cell average)
-              auto carries = [&]() {
-                if (settings.deletion_stress <= 0)
-                  return false;
-                const auto s = eigenvalues(cell_stress(cell,
-                                                       system.ghosted,
-                                                       material,
-                                                       bricks,
-                                                       specimen,
-                                                       stress_values));
-                return std::max(std::abs(s[0]), std::abs(s[2])) >
-                       settings.deletion_stress;
+              auto consider = [&]() {
+                const auto [d, s] = candidate();
+                if (settings.deletion_stress <= 0 ||
+                    std::max(std::abs(s[0]), std::abs(s[2])) <=
+                      settings.deletion_stress)
+                  {
+                    candidates.push_back(d);
+                    return true;
+                  }
+                return false;
               };
               if (opening <= 0 && crushing <= 0)
                 {
-                  if (!carries())
-                    candidates.emplace_back(e1, c);
+                  consider();
                   continue;
                 }
               // the fade: linear in the opening past the threshold (the
@@ -331,9 +354,9 @@ namespace masonry
                     split ? shortening - specimen.split_shortening[c] : 0.;
                   f = std::min(f, 1 - std::max(since, 0.) * l / crushing);
                 }
-              if (f <= 0 && !carries())
-                candidates.emplace_back(e1, c);
-              else if (f < specimen.fade[c])
+              if (f <= 0 && consider())
+                continue;
+              if (f < specimen.fade[c])
                 fades.emplace_back(f <= 0 ? fade_floor : f, c);
             }
         for (const auto &part :
@@ -350,30 +373,38 @@ namespace masonry
               ++faded;
             }
         // the same decision on every rank: largest strains first, capped
-        std::vector<std::pair<double, unsigned int>> all;
+        std::vector<DeletedCell> all;
         for (const auto &part :
              Utilities::MPI::all_gather(system.comm, candidates))
           all.insert(all.end(), part.begin(), part.end());
         std::sort(all.begin(), all.end(), [](const auto &a, const auto &b) {
-          return a.first > b.first ||
-                 (a.first == b.first && a.second < b.second);
+          return a.strain > b.strain ||
+                 (a.strain == b.strain && a.cell < b.cell);
         });
         if (all.size() > settings.max_deletions)
           {
             // faded out but over the cap: nearly nothing until deleted
             for (unsigned int k = settings.max_deletions; k < all.size(); ++k)
-              if (specimen.fade[all[k].second] > fade_floor)
+              if (specimen.fade[all[k].cell] > fade_floor)
                 {
-                  specimen.fade[all[k].second] = fade_floor;
+                  specimen.fade[all[k].cell] = fade_floor;
                   ++faded;
                 }
             all.resize(settings.max_deletions);
           }
         if (all.empty())
           return 0;
-        for (const auto &c : all)
-          specimen.deleted[c.second] = 1;
+        for (auto &d : all)
+          {
+            specimen.deleted[d.cell] = 1;
+            d.step                   = step.number;
+            d.cycle                  = step.cycle;
+            d.unloading              = step.unloading;
+          }
         specimen.n_deleted += all.size();
+        specimen.deletions.insert(specimen.deletions.end(),
+                                  all.begin(),
+                                  all.end());
         // joints at a deleted cell go with it
         for (unsigned int i = 0; i < joints.faces.size(); ++i)
           if (specimen.deleted[joints.faces[i].cell_a] ||

@@ -61,6 +61,14 @@ namespace masonry
         parse_parameters(dealii::ParameterHandler &prm);
       };
 
+      /** The converged step a deletion follows (DeletedCell). */
+      struct DeletionStep
+      {
+        unsigned int number    = 0;
+        unsigned int cycle     = 0;
+        bool         unloading = false;
+      };
+
       /**
        * Delete the cells over the threshold (at most the cap), the joints
        * at them, and constrain the DOFs no remaining cell holds (into
@@ -70,7 +78,8 @@ namespace masonry
        * with `Deletion stress' > 0 a cell is deleted only once the largest
        * absolute principal value of its cell-averaged stress (of
        * @p material at the converged states @p bricks) is at most that;
-       * @p faded: how many fade factors changed.
+       * @p faded: how many fade factors changed. Each deleted cell, with
+       * @p step and what it carried, goes into Specimen::deletions.
        */
       unsigned int
       delete_cells(const DeletionSettings &settings,
@@ -79,6 +88,7 @@ namespace masonry
                    const PointStates      &bricks,
                    System                 &system,
                    Specimen               &specimen,
+                   const DeletionStep     &step,
                    unsigned int           &faded);
 
       /** The cell-averaged stress (Pa) of cell @p cell (its fade

@@ -41,6 +41,40 @@ namespace masonry
         parse_parameters(dealii::ParameterHandler &prm);
       };
 
+      /** One deleted cell: when it went and what it carried then (the
+       * converged state of the step after which it was deleted, before
+       * its deletion). */
+      struct DeletedCell
+      {
+        /** The step after which it went (curve.csv's `step'), its cycle
+         * and whether that step unloaded (the protocol's leg). */
+        unsigned int step      = 0;
+        unsigned int cycle     = 0;
+        bool         unloading = false;
+        /** Its active cell index and region (BrickPoint::region: 0 unit,
+         * 1 mortar). */
+        unsigned int  cell   = 0;
+        unsigned char region = 0;
+        /** Its centre, m. */
+        std::array<double, 3> centre{};
+        /** The largest principal value of its cell-averaged strain. */
+        double strain = 0;
+        /** Its cell-averaged stress (its fade included), Pa: xx, yy, zz,
+         * xy, yz, xz. */
+        std::array<double, 6> stress{};
+
+        template <class Archive>
+        void
+        serialize(Archive &ar, const unsigned int)
+        {
+          ar &step &cycle &unloading &cell &region &strain;
+          for (auto &x : centre)
+            ar &x;
+          for (auto &s : stress)
+            ar &s;
+        }
+      };
+
       /** Per cell and per joint face data of a specimen. */
       struct Specimen
       {
@@ -69,6 +103,8 @@ namespace masonry
         std::vector<char>   face_deleted;
         /** Cells deleted so far. */
         unsigned int n_deleted = 0;
+        /** The deleted cells in the order they went (deletions.csv). */
+        std::vector<DeletedCell> deletions;
         /** Per brick point (8 c + q): the units' nonlocal factors of the
          * last IMPL-EX update (BrickPoint::tensile_factor, then
          * compressive_factor; `Nonlocal length'), so that the deletion
@@ -97,7 +133,7 @@ namespace masonry
         {
           ar &n_deleted &deleted &face_deleted &fade &split_shortening
               &max_shortening &nonlocal_factors[0] &
-            nonlocal_factors[1];
+            nonlocal_factors[1] & deletions;
         }
       };
 
