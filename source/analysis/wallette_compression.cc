@@ -183,10 +183,10 @@ namespace masonry
 
     private:
       /**
-       * The listed postprocessors: `curve tables' first (the curve and the
-       * summary the others use), `fields' and `joint fields' only with
-       * `Write VTU', `curve plot' only with `Write plot', `calculix' also
-       * with `Write CalculiX input'.
+       * The listed postprocessors in their order, `curve tables' also when
+       * not listed (curve.csv is always written), `fields' and `joint
+       * fields' only with `Write VTU', `curve plot' only with `Write plot',
+       * `calculix' also with `Write CalculiX input'.
        */
       void
       make_postprocessors(dealii::ParameterHandler &prm)
@@ -200,16 +200,10 @@ namespace masonry
             return s.output.write_plot;
           return true;
         };
-        const auto add = [&](const std::string &name) {
-          for (auto &p : listed)
-            if (p.first == name && p.second)
-              {
-                postprocessors.push_back(std::move(p.second));
-                return true;
-              }
-          return false;
-        };
-        if (!add("curve tables"))
+        bool tables = false;
+        for (const auto &p : listed)
+          tables = tables || p.first == "curve tables";
+        if (!tables)
           postprocessors.push_back(
             plugins::Registry<Family>::create(prm, "curve tables"));
         for (auto &p : listed)

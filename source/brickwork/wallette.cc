@@ -30,6 +30,7 @@
 #include <typeinfo>
 
 #include "assembly/regions.h"
+#include "curve_summary.h"
 #include "postprocess/builtin.h"
 #include "postprocess/report.h"
 #include "solution/bounds.h"
@@ -649,6 +650,12 @@ namespace masonry
                        const double       seconds)
       {
         Json &summary = context.summary;
+        // the curve's entries first: the result line below and every
+        // postprocessor may read them
+        write_curve_summary(curve,
+                            system.gauge_span,
+                            material.damage_names(),
+                            summary);
         for (auto &pp : plugins.postprocessors)
           pp->finish(*view, summary);
         const MPI_Comm comm = context.mpi_communicator;

@@ -3,8 +3,8 @@
  * The curve and cycle tables: curve.csv (one line per converged step,
  * written as the run goes), cycles.csv and envelope.csv (cyclic protocol),
  * the deleted cells (deletions.csv, with element deletion on) and the
- * curve's entries of summary.json (peak stress, strain at peak, initial
- * modulus, gauge, work, cycles).
+ * cycles' entry of summary.json. The curve's own entries of summary.json
+ * (peak stress, initial modulus, ...) are the run's (curve_summary.h).
  */
 #include <masonry/core/output_directory.h>
 #include <masonry/core/output_file.h>
@@ -119,7 +119,8 @@ namespace masonry
           return std::numeric_limits<double>::quiet_NaN();
         }
 
-        /** curve.csv, cycles.csv, envelope.csv and the curve's summary. */
+        /** curve.csv, cycles.csv, envelope.csv, deletions.csv and the
+         * cycles' summary. */
         class CurveTables : public Postprocessor
         {
         public:
@@ -152,15 +153,13 @@ namespace masonry
           {
             // curve.csv was written step by step
             view.context.output.file("curve.csv");
-            const auto  &curve   = view.curve;
-            const double modulus = curve.size() > 1 && curve[1].strain != 0 ?
-                                     curve[1].stress / curve[1].strain :
-                                     0.;
+            // the curve's own entries (initial_modulus, peak_stress, ...)
+            // are the run's (curve_summary.h)
+            const double modulus = summary.value("initial_modulus", 0.);
             if (view.protocol.is_cyclic())
               write_cycles(view, modulus, summary);
             if (view.settings.deletion.deletion_strain > 0)
               write_deletions(view);
-            write_summary(view, modulus, summary);
           }
 
         private:
@@ -303,49 +302,6 @@ namespace masonry
               }
             out.close();
           }
-
-          void
-          write_summary(const ModelView &view,
-                        const double     modulus,
-                        Json            &summary) const
-          {
-            const auto &curve = view.curve;
-            double      peak = -1e300, strain_at_peak = 0;
-            for (const auto &p : curve)
-              if (p.stress > peak)
-                {
-                  peak           = p.stress;
-                  strain_at_peak = p.strain;
-                }
-            double work = 0;
-            for (unsigned int i = 1; i < curve.size(); ++i)
-              work += 0.5 * (curve[i].force + curve[i - 1].force) *
-                      (curve[i].displacement - curve[i - 1].displacement);
-            summary["peak_stress"]     = curve.size() > 1 ? peak : 0.;
-            summary["strain_at_peak"]  = strain_at_peak;
-            summary["initial_modulus"] = modulus;
-            if (view.system.gauge_span > 0)
-              {
-                summary["gauge_length"] = view.system.gauge_span;
-                for (const auto &p : curve)
-                  if (p.stress == peak)
-                    summary["gauge_strain_at_peak"] = p.gauge_strain;
-                summary["initial_modulus_gauge"] =
-                  curve.size() > 1 && curve[1].gauge_strain != 0 ?
-                    curve[1].stress / curve[1].gauge_strain :
-                    0.;
-              }
-            summary["final_stress"]  = curve.back().stress;
-            summary["final_strain"]  = curve.back().strain;
-            summary["external_work"] = work;
-            summary["max_damage"]    = curve.back().max_damage;
-            const auto names         = view.material.damage_names();
-            for (unsigned int k = 0; k < names.size(); ++k)
-              summary["max_brick_" + names[k]] =
-                k < curve.back().brick_damages.size() ?
-                  curve.back().brick_damages[k] :
-                  0.;
-          }
         };
       } // namespace
 
@@ -356,4 +312,4 @@ namespace masonry
 MASONRY_REGISTER_WALLETTE_POSTPROCESSOR(
   masonry::brickwork::postprocess::CurveTables,
   "curve tables",
-  "curve.csv (one line per converged step: displacement in m, strain, force in N, stress in Pa, Newton iterations, largest joint damage, gauge strain, cycle, unloading, deleted cells, largest brick damages), cycles.csv and envelope.csv (cyclic protocol), deletions.csv (with `Deletion strain' > 0: one line per deleted cell in the order they went: the step after which it went, its cycle and leg, cell index, region 0 unit 1 mortar, centre in m, the largest principal value of its cell-averaged strain and the six components of its cell-averaged stress in Pa at that step, its fade included) and the curve's entries of summary.json (peak_stress in Pa, strain_at_peak, initial_modulus in Pa, final_stress, external_work in J, cycles).")
+  "curve.csv (one line per converged step: displacement in m, strain, force in N, stress in Pa, Newton iterations, largest joint damage, gauge strain, cycle, unloading, deleted cells, largest brick damages), cycles.csv and envelope.csv (cyclic protocol), deletions.csv (with `Deletion strain' > 0: one line per deleted cell in the order they went: the step after which it went, its cycle and leg, cell index, region 0 unit 1 mortar, centre in m, the largest principal value of its cell-averaged strain and the six components of its cell-averaged stress in Pa at that step, its fade included) and the cycles in summary.json (the run writes the curve's own entries: peak_stress in Pa, strain_at_peak, initial_modulus in Pa, final_stress, external_work in J).")

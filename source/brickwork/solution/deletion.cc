@@ -306,12 +306,12 @@ namespace masonry
                 const auto where = cell->center();
                 for (unsigned int i = 0; i < 3; ++i)
                   d.centre[i] = where[i];
-                d.stress = {sigma[0][0],
-                            sigma[1][1],
-                            sigma[2][2],
-                            sigma[0][1],
-                            sigma[1][2],
-                            sigma[0][2]};
+                d.stress = {{sigma[0][0],
+                             sigma[1][1],
+                             sigma[2][2],
+                             sigma[0][1],
+                             sigma[1][2],
+                             sigma[0][2]}};
                 return std::make_pair(d, eigenvalues(sigma));
               };
               // a cell that still carries more than `Deletion stress'
