@@ -766,6 +766,9 @@ def main(argv):
             fit_lines.append(f"| {name} | {f(pre)} | {f(post)} | "
                              f"{reach:.2f} | {mark(ok)} |")
     names = [s["name"] for s in data] + [r["name"] for r in sweep]
+    # the bonded part's runs say their model too
+    names += sorted(f[:-4] for f in os.listdir(directory)
+                    if f.startswith("bonded-") and f.endswith(".prm"))
     headers = [open(os.path.join(directory, n + ".prm")).readline()
                for n in names]
     quick = any("(--quick)" in h for h in headers)
