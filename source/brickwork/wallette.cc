@@ -634,9 +634,12 @@ namespace masonry
             system.u = u_converged;
             if (!bad_state)
               {
-                output();
+                // the checkpoint first: a resumed run lists the output
+                // steps of an uninterrupted one, not this stop's extra
+                // state (its files stay, written below)
                 if (status != "completed")
                   save(status);
+                output();
               }
           }
         finish(status,
