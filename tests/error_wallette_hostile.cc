@@ -10,7 +10,8 @@
 //   the brick material's entry it was derived from;
 // - a mortar joint thicker than the smallest unit of the bond (a half
 //   brick is (brick + joint) / 2 - joint) ended in deal.II's text for an
-//   internal error: it now names `Joint thickness'.
+//   internal error: it now names `Joint thickness', before the output
+//   directory is written, and `masonry --validate' finds it too.
 #include "tests.h"
 
 namespace
@@ -86,4 +87,13 @@ main(int argc, char **argv)
                    "  set Model = damage plasticity\n"
                    "end\n",
         true);
+  const testing::Result v =
+    testing::run({"--validate", "error_wallette_hostile_joint_thickness.prm"});
+  std::cout << "joint_thickness, --validate: exit code non-zero: "
+            << (v.exit_code != 0 ? "yes" : "no") << "\nnames the entry: "
+            << (v.err.find("entry 'Wallette/Joint thickness'") !=
+                    std::string::npos ?
+                  "yes" :
+                  "no")
+            << '\n';
 }

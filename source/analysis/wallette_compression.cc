@@ -148,6 +148,8 @@ namespace masonry
         boxes = bond->layout(s.mesh.size);
         if (!s.mesh.detailed)
           brickwork::check_mesh(boxes, s.mesh);
+        else
+          brickwork::check_units(boxes, s.mesh);
         // (the detailed model's units are one joint shorter)
         if (s.mesh.split_units)
           splitting_law = brickwork::make_splitting_law(

@@ -255,6 +255,32 @@ namespace masonry
             }
     }
 
+    void
+    check_units(const std::vector<Box> &boxes, const MeshSettings &s)
+    {
+      const double hm = s.mortar_thickness;
+      for (const Box &box : boxes)
+        for (unsigned int d = 0; d < 3; ++d)
+          {
+            // a unit is its enlarged box less one joint: the bond's
+            // smallest piece (a half brick, a closer) must keep a size
+            const double unit = box.upper[d] - box.lower[d] - hm;
+            if (!(unit > 1e-6))
+              {
+                std::ostringstream m;
+                m << hm << " m leaves a unit of the bond "
+                  << (unit > 0 ? unit : 0.)
+                  << (d == 0 ? " m long" :
+                      d == 1 ? " m wide" :
+                               " m high")
+                  << " (a unit is its share of the wall less one joint: a "
+                     "half brick or closer is (brick + joint) / 2 - "
+                     "joint); the joint must be thinner than the units";
+                AssertThrow(false, ExcParameter("Joint thickness", m.str()));
+              }
+          }
+    }
+
     namespace model
     {
       unsigned int
@@ -324,25 +350,10 @@ namespace masonry
         const double hm = settings.mortar_thickness;
         const auto   h  = mesh_spacing(settings);
         Geometry     g;
+        check_units(boxes, settings);
         for (const Box &box : boxes)
           for (unsigned int d = 0; d < 3; ++d)
             {
-              // a unit is its enlarged box less one joint: the bond's
-              // smallest piece (a half brick, a closer) must keep a size
-              const double unit = box.upper[d] - box.lower[d] - hm;
-              if (!(unit > 1e-6))
-                {
-                  std::ostringstream m;
-                  m << hm << " m leaves a unit of the bond "
-                    << (unit > 0 ? unit : 0.)
-                    << (d == 0 ? " m long" :
-                        d == 1 ? " m wide" :
-                                 " m high")
-                    << " (a unit is its share of the wall less one joint: a "
-                       "half brick or closer is (brick + joint) / 2 - "
-                       "joint); the joint must be thinner than the units";
-                  AssertThrow(false, ExcParameter("Joint thickness", m.str()));
-                }
               const double top    = box.upper[d] - hm;
               (d == 0 ? g.length :
                d == 1 ? g.thickness :

@@ -104,6 +104,14 @@ namespace masonry
     void
     check_mesh(const std::vector<Box> &boxes, const MeshSettings &settings);
 
+    /**
+     * Check that every unit of the detailed model (a box less one joint,
+     * MeshSettings::mortar_thickness) keeps a size in each direction;
+     * throws an ExcParameter naming `Joint thickness'.
+     */
+    void
+    check_units(const std::vector<Box> &boxes, const MeshSettings &settings);
+
     namespace model
     {
       /** The overall dimensions of the wallette, m and m^2. */
