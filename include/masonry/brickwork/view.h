@@ -1,20 +1,40 @@
 /**
  * @file
  * The read-only view of a wallette model that postprocessors get (ASPECT's
- * SimulatorAccess): the settings, the output directory, the laws, the curve
- * and the point states. This header is public and light: the parts of the
- * model (mesh, DoFs, joints, ...) are only declared here; the built-in
- * postprocessors include their private headers, a postprocessor in a shared
- * library uses the functions below.
+ * SimulatorAccess): the settings, the output directory, the laws, the curve,
+ * the mesh, the DoF handler and the solution, the joints, the cells'
+ * regions and deletions, and the point states by name. This header is
+ * public and light: the deal.II objects are only declared here (include
+ * their deal.II headers where you use them) and the model's own parts
+ * (System, Specimen, ...) stay private; a postprocessor in a shared library
+ * uses the functions below, contrib/examples/wallette_field shows one that
+ * writes a cell field.
  */
 #ifndef masonry_brickwork_view_h
 #define masonry_brickwork_view_h
 
 #include <masonry/brickwork/curve.h>
+#include <masonry/brickwork/joint_faces.h>
 #include <masonry/brickwork/state.h>
 #include <masonry/core/run_context.h>
 
+#include <string>
 #include <vector>
+
+namespace dealii
+{
+  template <int dim, int spacedim>
+  class Triangulation;
+  template <int dim, int spacedim>
+  class DoFHandler;
+  namespace TrilinosWrappers
+  {
+    namespace MPI
+    {
+      class Vector;
+    } // namespace MPI
+  }   // namespace TrilinosWrappers
+} // namespace dealii
 
 namespace masonry
 {
@@ -48,12 +68,17 @@ namespace masonry
       /** One point per converged step so far (the initial state first). */
       const std::vector<CurvePoint> &curve;
 
+      /** The joints and splitting interfaces: one InterfaceFace per pair of
+       * coincident cell faces (type, normal axis, vertices, area, cells);
+       * the joint points of face pair n are 4 n + q. */
+      const model::Joints &joints;
+
       /** @name The parts of the model (private headers in
-       * source/brickwork/specimen, assembly and solution) */
+       * source/brickwork/specimen, assembly and solution: for the built-in
+       * postprocessors; a plugin uses the functions below) */
       /** @{ */
       const model::Geometry         &geometry;
       const model::System           &system;
-      const model::Joints           &joints;
       const model::Specimen         &specimen;
       const model::InterfaceElement &element;
       /** Brick points (8 c + q) and joint points (4 n + q). */
@@ -103,6 +128,55 @@ namespace masonry
       n_joint_points() const;
       ConstStateView
       joint_state(const unsigned int point) const;
+
+      /**
+       * @name The mesh and the solution, as deal.II objects (include
+       * <deal.II/distributed/shared_tria.h>, <deal.II/dofs/dof_handler.h>
+       * and <deal.II/lac/trilinos_vector.h> to use them)
+       */
+      /** @{ */
+      /** The hexahedra of the units (and of the mortar in the detailed
+       * model), shared by every rank; cell c is active_cell_index() c. */
+      const dealii::Triangulation<3, 3> &
+      triangulation() const;
+      /** The displacement DoFs (FESystem of three Q1 components, m). */
+      const dealii::DoFHandler<3, 3> &
+      dof_handler() const;
+      /** The converged displacements (m) of the present step, with every
+       * entry this rank's cells need (a ghosted copy: DataOut, FEValues'
+       * get_function_values and similar read it directly). */
+      dealii::TrilinosWrappers::MPI::Vector
+      solution() const;
+      /** @} */
+
+      /**
+       * @name The cells (by active_cell_index()) and the point states by
+       * name
+       */
+      /** @{ */
+      /** The region of cell @p c: 0 unit, 1 mortar (detailed model). */
+      unsigned int
+      cell_region(const unsigned int c) const;
+      /** Whether cell @p c has been deleted (it carries nothing). */
+      bool
+      cell_deleted(const unsigned int c) const;
+      /** The factor (0..1) on the stress of cell @p c while it fades out
+       * before its deletion; 1 without fading. */
+      double
+      cell_fade(const unsigned int c) const;
+
+      /**
+       * The position of the state variable @p name in the brick material's
+       * state (state_variables()): its first double in brick_state(p).
+       * Throws an error naming @p name and the variables there are if the
+       * material has no such variable.
+       */
+      unsigned int
+      brick_state_index(const std::string &name) const;
+      /** The same for the interface law of the joints (joint_state(p)). */
+      unsigned int
+      joint_state_index(const std::string &name) const;
+      /** @} */
     };
   } // namespace brickwork
 } // namespace masonry

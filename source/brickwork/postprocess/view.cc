@@ -6,10 +6,40 @@
 
 #include "view.h"
 
+#include <algorithm>
+
 namespace masonry
 {
   namespace brickwork
   {
+    namespace
+    {
+      /** The first double of the state variable @p name among
+       * @p variables; an error names @p name, @p whose law and the
+       * variables there are. */
+      unsigned int
+      state_index(const std::vector<StateVariable> &variables,
+                  const std::string                &name,
+                  const std::string                &whose)
+      {
+        unsigned int index = 0;
+        std::string  names;
+        for (const StateVariable &v : variables)
+          {
+            if (v.name == name)
+              return index;
+            index += v.n_components;
+            names += (names.empty() ? "" : ", ") + v.name;
+          }
+        AssertThrow(false,
+                    dealii::ExcMessage(
+                      "model view: the " + whose + " has no state variable `" +
+                      name + "' (it has: " +
+                      (names.empty() ? std::string("none") : names) + ")"));
+        return 0;
+      }
+    } // namespace
+
     bool
     ModelView::is_root() const
     {
@@ -57,6 +87,54 @@ namespace masonry
     ModelView::joint_state(const unsigned int point) const
     {
       return joint_points.old(point);
+    }
+
+    const dealii::Triangulation<3, 3> &
+    ModelView::triangulation() const
+    {
+      return system.triangulation;
+    }
+
+    const dealii::DoFHandler<3, 3> &
+    ModelView::dof_handler() const
+    {
+      return system.dof_handler;
+    }
+
+    dealii::TrilinosWrappers::MPI::Vector
+    ModelView::solution() const
+    {
+      return system.ghosted_copy();
+    }
+
+    unsigned int
+    ModelView::cell_region(const unsigned int c) const
+    {
+      return specimen.cell_region.empty() ? 0 : specimen.cell_region[c];
+    }
+
+    bool
+    ModelView::cell_deleted(const unsigned int c) const
+    {
+      return specimen.deleted[c];
+    }
+
+    double
+    ModelView::cell_fade(const unsigned int c) const
+    {
+      return specimen.fade[c];
+    }
+
+    unsigned int
+    ModelView::brick_state_index(const std::string &name) const
+    {
+      return state_index(material.state_variables(), name, "brick material");
+    }
+
+    unsigned int
+    ModelView::joint_state_index(const std::string &name) const
+    {
+      return state_index(law.state_variables(), name, "interface law");
     }
   } // namespace brickwork
 } // namespace masonry

@@ -5,11 +5,10 @@
 #ifndef masonry_brickwork_model_joints_h
 #define masonry_brickwork_model_joints_h
 
-#include <deal.II/base/point.h>
+#include <masonry/brickwork/joint_faces.h>
+
 #include <deal.II/dofs/dof_handler.h>
 
-#include <array>
-#include <vector>
 
 namespace masonry
 {
@@ -17,43 +16,6 @@ namespace masonry
   {
     namespace model
     {
-      /** A joint between two bricks: a pair of coincident cell faces. */
-      struct InterfaceFace
-      {
-        /** 0 bed (normal z), 1 head (normal x), 2 collar (normal y), 3
-         * splitting (through a unit: both sides belong to the same brick). */
-        unsigned int type;
-        /** Axis of the normal (from side A, lower coordinate, to B). */
-        unsigned int axis;
-        /** Whether this rank assembles it (owner of side A). */
-        bool owned;
-        /** Degrees of freedom: A vertices 0-3 then B, 3 components each. */
-        std::vector<dealii::types::global_dof_index> dofs;
-        /** Vertices of side A (face-lexicographic order). */
-        std::array<dealii::Point<3>, 4> vertices;
-        /** Area, m^2. */
-        double area;
-        /** Bricks on both sides. */
-        unsigned int brick_a, brick_b;
-        /** Active cell indices on both sides. */
-        unsigned int cell_a, cell_b;
-      };
-
-      /** InterfaceFace::type of a splitting interface. */
-      constexpr unsigned int splitting_type = 3;
-
-      /** Names of the joint types, by InterfaceFace::type. */
-      extern const char *joint_type_name[4];
-
-      /** All joints of the wallette. */
-      struct Joints
-      {
-        std::vector<InterfaceFace> faces;
-        /** Face pairs and joints (brick pairs) of each type. */
-        std::array<unsigned int, 4> n_faces_of_type{{0, 0, 0, 0}},
-          n_joints_of_type{{0, 0, 0, 0}};
-      };
-
       /**
        * The coincident boundary faces of different cells of
        * @p dof_handler (those on z = 0 and z = @p height are the platens').
