@@ -6,7 +6,7 @@
  * holds the top face. A plugin family: a new protocol is one file with a
  * class derived from Protocol and one MASONRY_REGISTER_PROTOCOL line
  * (source/brickwork/protocols/monotonic.cc is the smallest; a test defines
- * one whose platen may rotate, tests/brickwork_custom_protocol.cc). The
+ * one whose platen is free to tilt, tests/brickwork_free_rotation.cc). The
  * protocols' entries stand in `subsection Wallette' next to the analysis's
  * own.
  */
