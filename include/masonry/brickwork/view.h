@@ -43,6 +43,7 @@ namespace masonry
     class BrickMaterial;
     class InterfaceLaw;
     class Protocol;
+    struct Platen;
     struct WalletteSettings;
     namespace model
     {
@@ -164,6 +165,21 @@ namespace masonry
        * before its deletion; 1 without fading. */
       double
       cell_fade(const unsigned int c) const;
+      /** Whether cells may be deleted in this run (`Deletion strain' > 0). */
+      bool
+      deletes_cells() const;
+      /** The cells deleted so far, in the order they went. */
+      const std::vector<DeletedCell> &
+      deletions() const;
+      /** Whether the joint face pair @p n (joints.faces[n]) has been
+       * deleted with a cell on either side. */
+      bool
+      joint_face_deleted(const unsigned int n) const;
+      /** The top platen as the protocol holds it: its nodes, their DoFs,
+       * its direction and whether it holds the face laterally (include
+       * <masonry/brickwork/protocol.h> to use it). */
+      const Platen &
+      top_platen() const;
 
       /**
        * The position of the state variable @p name in the brick material's

@@ -5,13 +5,18 @@
  * linear static step (calculix.inp), and this run's final displacements in
  * the same node numbering (nodal_displacements.csv).
  */
+#include <masonry/brickwork/brick_material.h>
+#include <masonry/brickwork/postprocessor.h>
+#include <masonry/brickwork/protocol.h>
 #include <masonry/core/output_directory.h>
 #include <masonry/core/output_file.h>
 
+#include <deal.II/distributed/shared_tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/trilinos_vector.h>
+
 #include <fstream>
 #include <iomanip>
-
-#include "builtin.h"
 
 namespace masonry
 {
@@ -38,15 +43,14 @@ namespace masonry
         void
         CalculiX::finish(const ModelView &view, Json &)
         {
-          const auto          &settings      = view.settings;
-          const System::Vector ghosted       = view.system.ghosted_copy();
-          const auto          &triangulation = view.system.triangulation;
+          const Platen                       &platen  = view.top_platen();
+          const TrilinosWrappers::MPI::Vector ghosted = view.solution();
+          const auto &triangulation                   = view.triangulation();
           // the nodes used by the cells, numbered from 1 in vertex order
           const auto               &all = triangulation.get_vertices();
           std::vector<unsigned int> node(all.size(), 0);
           std::vector<std::array<types::global_dof_index, 3>> dofs(all.size());
-          for (const auto &cell :
-               view.system.dof_handler.active_cell_iterators())
+          for (const auto &cell : view.dof_handler().active_cell_iterators())
             for (const unsigned int v : cell->vertex_indices())
               {
                 node[cell->vertex_index(v)] = 1;
@@ -60,13 +64,13 @@ namespace masonry
           const std::string inp = view.context.output.file("calculix.inp");
           const std::string csv =
             view.context.output.file("nodal_displacements.csv");
-          if (Utilities::MPI::this_mpi_process(view.system.comm) != 0)
+          if (!view.is_root())
             return;
-          const double height = view.geometry.height;
+          const double height = view.height();
           const double tol    = 1e-9 * height;
-          const auto  &dir    = settings.platen.direction;
+          const auto  &dir    = platen.direction;
           const double target = view.protocol.target_displacement();
-          const bool   fixed  = settings.platen.lateral_fixed;
+          const bool   fixed  = platen.lateral_fixed;
           OutputFile   out(inp);
           // CalculiX reads fields of at most 20 characters
           out << std::setprecision(15);

@@ -5,12 +5,12 @@
  * the installed script contrib/plot/wallette_curve.py (matplotlib) from
  * curve.csv and cycles.csv.
  */
+#include <masonry/brickwork/postprocessor.h>
+#include <masonry/brickwork/protocol.h>
 #include <masonry/core/output_directory.h>
 #include <masonry/core/scripts.h>
 
 #include <filesystem>
-
-#include "builtin.h"
 
 namespace masonry
 {
@@ -34,7 +34,7 @@ namespace masonry
             // the pictures are named as files of this run only once drawn:
             // a file named but not written makes the run `failed'
             const bool cyclic = view.protocol.is_cyclic();
-            if (dealii::Utilities::MPI::this_mpi_process(view.system.comm) != 0)
+            if (!view.is_root())
               return;
             const std::string why =
               run_script("wallette_curve.py",

@@ -6,6 +6,9 @@
  * cycles' entry of summary.json. The curve's own entries of summary.json
  * (peak stress, initial modulus, ...) are the run's (curve_summary.h).
  */
+#include <masonry/brickwork/brick_material.h>
+#include <masonry/brickwork/postprocessor.h>
+#include <masonry/brickwork/protocol.h>
 #include <masonry/core/output_directory.h>
 #include <masonry/core/output_file.h>
 
@@ -17,8 +20,6 @@
 #include <fstream>
 #include <iomanip>
 #include <limits>
-
-#include "builtin.h"
 
 namespace masonry
 {
@@ -54,7 +55,7 @@ namespace masonry
                   c.cycle = p.cycle;
                   c.first = c.turn = i - 1;
                   c.amplitude =
-                    view.protocol.amplitude(p.cycle) / view.geometry.height;
+                    view.protocol.amplitude(p.cycle) / view.height();
                   cycles.push_back(c);
                 }
               Cycle &c = cycles.back();
@@ -158,7 +159,7 @@ namespace masonry
             const double modulus = summary.value("initial_modulus", 0.);
             if (view.protocol.is_cyclic())
               write_cycles(view, modulus, summary);
-            if (view.settings.deletion.deletion_strain > 0)
+            if (view.deletes_cells())
               write_deletions(view);
           }
 
@@ -174,7 +175,7 @@ namespace masonry
                      const unsigned int i,
                      const bool         header) const
           {
-            if (dealii::Utilities::MPI::this_mpi_process(view.system.comm) != 0)
+            if (!view.is_root())
               return;
             // curve.csv grows line by line, so that a user can follow a long
             // run; a line that cannot be written ends the run
@@ -212,9 +213,8 @@ namespace masonry
           {
             const auto              &curve  = view.curve;
             const std::vector<Cycle> cycles = cycle_results(view);
-            const bool               root =
-              dealii::Utilities::MPI::this_mpi_process(view.system.comm) == 0;
-            const std::string dir = view.context.output.path();
+            const bool               root   = view.is_root();
+            const std::string        dir    = view.context.output.path();
             view.context.output.file("cycles.csv");
             if (root)
               {
@@ -282,14 +282,14 @@ namespace masonry
           write_deletions(const ModelView &view) const
           {
             view.context.output.file("deletions.csv");
-            if (dealii::Utilities::MPI::this_mpi_process(view.system.comm) != 0)
+            if (!view.is_root())
               return;
             OutputFile out(view.context.output.path() + "deletions.csv");
             out << std::setprecision(12)
                 << "step,cycle,unloading,cell,region,x_m,y_m,z_m,"
                    "largest_principal_strain,stress_xx_Pa,stress_yy_Pa,"
                    "stress_zz_Pa,stress_xy_Pa,stress_yz_Pa,stress_xz_Pa\n";
-            for (const auto &d : view.specimen.deletions)
+            for (const auto &d : view.deletions())
               {
                 out << d.step << "," << d.cycle << "," << d.unloading << ","
                     << d.cell << "," << int(d.region);

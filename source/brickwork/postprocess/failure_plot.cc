@@ -8,6 +8,8 @@
  * installed script contrib/plot/wallette_failure.py (matplotlib, run with
  * /usr/bin/python3) draws the picture from it.
  */
+#include <masonry/brickwork/brick_material.h>
+#include <masonry/brickwork/postprocessor.h>
 #include <masonry/core/json.h>
 #include <masonry/core/output_directory.h>
 #include <masonry/core/output_file.h>
@@ -15,14 +17,15 @@
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/patterns.h>
+#include <deal.II/distributed/shared_tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/trilinos_vector.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
-
-#include "builtin.h"
 
 namespace masonry
 {
@@ -94,26 +97,25 @@ namespace masonry
         void
         FailurePlot::finish(const ModelView &view, Json &summary)
         {
-          const System::Vector u    = view.system.ghosted_copy();
-          const MPI_Comm       comm = view.system.comm;
+          const TrilinosWrappers::MPI::Vector u = view.solution();
+          const MPI_Comm comm                   = view.context.mpi_communicator;
           // this rank's cells and open faces
           std::vector<double>  cells, faces;
           const BrickMaterial &material = view.material;
           const unsigned int   n_damage =
             material.is_linear() ? 0 : material.damage_names().size();
           std::vector<double> damage(n_damage);
-          for (const auto &cell :
-               view.system.dof_handler.active_cell_iterators())
+          for (const auto &cell : view.dof_handler().active_cell_iterators())
             if (cell->is_locally_owned())
               {
                 const unsigned int c = cell->active_cell_index();
-                cells.push_back(view.specimen.deleted[c]);
+                cells.push_back(view.cell_deleted(c));
                 // mean over the cell's points of the largest damage
                 double d = 0;
                 if (n_damage > 0)
                   for (unsigned int q = 0; q < 8; ++q)
                     {
-                      material.damages(view.bricks.old(8 * c + q), damage);
+                      material.damages(view.brick_state(8 * c + q), damage);
                       d += *std::max_element(damage.begin(), damage.end()) / 8;
                     }
                 cells.push_back(d);
@@ -127,7 +129,7 @@ namespace masonry
               }
           const auto &all = view.joints.faces;
           for (unsigned int i = 0; i < all.size(); ++i)
-            if (all[i].owned && !view.specimen.face_deleted[i])
+            if (all[i].owned && !view.joint_face_deleted(i))
               {
                 const auto  &face = all[i];
                 Tensor<1, 3> jump;

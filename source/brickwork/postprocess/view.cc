@@ -125,6 +125,30 @@ namespace masonry
       return specimen.fade[c];
     }
 
+    bool
+    ModelView::deletes_cells() const
+    {
+      return settings.deletion.deletion_strain > 0;
+    }
+
+    const std::vector<DeletedCell> &
+    ModelView::deletions() const
+    {
+      return specimen.deletions;
+    }
+
+    bool
+    ModelView::joint_face_deleted(const unsigned int n) const
+    {
+      return specimen.face_deleted[n];
+    }
+
+    const Platen &
+    ModelView::top_platen() const
+    {
+      return system.top;
+    }
+
     unsigned int
     ModelView::brick_state_index(const std::string &name) const
     {

@@ -8,6 +8,7 @@
 #define masonry_brickwork_model_specimen_h
 
 #include <masonry/brickwork/brick_material.h>
+#include <masonry/brickwork/curve.h>
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/grid/tria.h>
@@ -39,40 +40,6 @@ namespace masonry
         /** Read them. */
         void
         parse_parameters(dealii::ParameterHandler &prm);
-      };
-
-      /** One deleted cell: when it went and what it carried then (the
-       * converged state of the step after which it was deleted, before
-       * its deletion). */
-      struct DeletedCell
-      {
-        /** The step after which it went (curve.csv's `step'), its cycle
-         * and whether that step unloaded (the protocol's leg). */
-        unsigned int step      = 0;
-        unsigned int cycle     = 0;
-        bool         unloading = false;
-        /** Its active cell index and region (BrickPoint::region: 0 unit,
-         * 1 mortar). */
-        unsigned int  cell   = 0;
-        unsigned char region = 0;
-        /** Its centre, m. */
-        std::array<double, 3> centre{};
-        /** The largest principal value of its cell-averaged strain. */
-        double strain = 0;
-        /** Its cell-averaged stress (its fade included), Pa: xx, yy, zz,
-         * xy, yz, xz. */
-        std::array<double, 6> stress{};
-
-        template <class Archive>
-        void
-        serialize(Archive &ar, const unsigned int)
-        {
-          ar &step &cycle &unloading &cell &region &strain;
-          for (auto &x : centre)
-            ar &x;
-          for (auto &s : stress)
-            ar &s;
-        }
       };
 
       /** Per cell and per joint face data of a specimen. */
