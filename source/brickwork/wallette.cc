@@ -31,7 +31,7 @@
 
 #include "assembly/regions.h"
 #include "curve_summary.h"
-#include "postprocess/builtin.h"
+#include "postprocess/view.h"
 #include "postprocess/report.h"
 #include "solution/bounds.h"
 #include "solution/stop_messages.h"
@@ -255,6 +255,8 @@ namespace masonry
                                                      context,
                                                      material,
                                                      law,
+                                                     splitting_law,
+                                                     plugins.protocol,
                                                      curve,
                                                      joints,
                                                      geometry,
@@ -263,9 +265,7 @@ namespace masonry
                                                      assembler->element(),
                                                      bricks,
                                                      joint_points,
-                                                     splitting_law,
                                                      splitting_points,
-                                                     plugins.protocol,
                                                      *controller});
         postprocessor_data.assign(plugins.postprocessors.size(), std::string());
         u_converged = system.u;

@@ -43,6 +43,10 @@ namespace masonry
         unsigned int cell_a, cell_b;
       };
 
+      /** Integration points of a face pair (2 x 2, Gauss or Lobatto):
+       * point q of face pair n is 4 n + q. */
+      constexpr unsigned int joint_face_points = 4;
+
       /** InterfaceFace::type of a splitting interface. */
       constexpr unsigned int splitting_type = 3;
 

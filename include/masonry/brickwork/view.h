@@ -6,9 +6,11 @@
  * regions and deletions, and the point states by name. This header is
  * public and light: the deal.II objects are only declared here (include
  * their deal.II headers where you use them) and the model's own parts
- * (System, Specimen, ...) stay private; a postprocessor in a shared library
- * uses the functions below, contrib/examples/wallette_field shows one that
- * writes a cell field.
+ * (System, Specimen, ...) stay private: every output uses the functions
+ * below. The built-in outputs (source/brickwork/postprocess/) include only
+ * installed headers, so each is a template for one of your own;
+ * contrib/examples/wallette_field is one built out of tree that writes a
+ * cell field.
  */
 #ifndef masonry_brickwork_view_h
 #define masonry_brickwork_view_h
@@ -23,6 +25,8 @@
 
 namespace dealii
 {
+  template <int rank, int dim, typename Number>
+  class SymmetricTensor;
   template <int dim, int spacedim>
   class Triangulation;
   template <int dim, int spacedim>
@@ -44,6 +48,7 @@ namespace masonry
     class InterfaceLaw;
     class Protocol;
     struct Platen;
+    struct OutputSettings;
     struct WalletteSettings;
     namespace model
     {
@@ -66,6 +71,11 @@ namespace masonry
       /** The laws of the bricks and of the joints. */
       const BrickMaterial &material;
       const InterfaceLaw  &law;
+      /** The law of the splitting interfaces through the units (nullptr:
+       * none; their points: splitting_state()). */
+      const InterfaceLaw *splitting_law;
+      /** The loading protocol (include <masonry/brickwork/protocol.h>). */
+      const Protocol &protocol;
       /** One point per converged step so far (the initial state first). */
       const std::vector<CurvePoint> &curve;
 
@@ -82,14 +92,11 @@ namespace masonry
       const model::System           &system;
       const model::Specimen         &specimen;
       const model::InterfaceElement &element;
-      /** Brick points (8 c + q) and joint points (4 n + q). */
-      const model::PointStates &bricks;
-      const model::PointStates &joint_points;
-      /** The law of the splitting interfaces through the units (nullptr:
-       * none) and their points (4 per face pair, as the joints). */
-      const InterfaceLaw          *splitting_law;
+      /** Brick points (8 c + q), joint points (4 n + q) and the points of
+       * the splitting interfaces (4 per face pair, as the joints). */
+      const model::PointStates    &bricks;
+      const model::PointStates    &joint_points;
       const model::PointStates    &splitting_points;
-      const Protocol              &protocol;
       const model::StepController &controller;
       /** @} */
 
@@ -131,6 +138,21 @@ namespace masonry
       joint_state(const unsigned int point) const;
 
       /**
+       * Number of points of the splitting interfaces (4 per face pair n of
+       * type model::splitting_type: 4 n + q, numbered as the joint points;
+       * 0 without splitting interfaces) and their converged states, in the
+       * layout of splitting_law's state_variables().
+       */
+      unsigned int
+      n_splitting_points() const;
+      ConstStateView
+      splitting_state(const unsigned int point) const;
+
+      /** The output entries of the run (`Output format', ...). */
+      const OutputSettings &
+      output_settings() const;
+
+      /**
        * @name The mesh and the solution, as deal.II objects (include
        * <deal.II/distributed/shared_tria.h>, <deal.II/dofs/dof_handler.h>
        * and <deal.II/lac/trilinos_vector.h> to use them)
@@ -168,6 +190,14 @@ namespace masonry
       /** Whether cells may be deleted in this run (`Deletion strain' > 0). */
       bool
       deletes_cells() const;
+      /** Whether cells fade out before their deletion (`Deletion fade
+       * opening' or `Deletion crushing length' > 0 with deletion on). */
+      bool
+      fades_cells() const;
+      /** Whether the cells have regions (the detailed model: units and
+       * mortar). */
+      bool
+      has_regions() const;
       /** The cells deleted so far, in the order they went. */
       const std::vector<DeletedCell> &
       deletions() const;
@@ -180,6 +210,20 @@ namespace masonry
        * <masonry/brickwork/protocol.h> to use it). */
       const Platen &
       top_platen() const;
+
+      /**
+       * The stress (Pa) of brick point @p q of cell @p c at the strain
+       * @p eps from its converged state, with the cell's strength factor,
+       * crack-band length and region: the stress the step left, without the
+       * cell's fade (what solution_NNNN.vtu averages and the deletion
+       * reads). Call it with deal.II limited to one thread (OneThread,
+       * <masonry/brickwork/one_thread.h>) if the strains come from FEValues,
+       * so that the values do not depend on `Assembly threads'.
+       */
+      dealii::SymmetricTensor<2, 3, double>
+      brick_stress(const unsigned int                           c,
+                   const unsigned int                           q,
+                   const dealii::SymmetricTensor<2, 3, double> &eps) const;
 
       /**
        * The position of the state variable @p name in the brick material's

@@ -10,6 +10,7 @@
 #define masonry_brickwork_model_interface_element_h
 
 #include <masonry/brickwork/interface_law.h>
+#include <masonry/brickwork/joint_faces.h>
 
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
@@ -33,7 +34,7 @@ namespace masonry
       {
       public:
         /** Number of integration points (2 x 2). */
-        static constexpr unsigned int n_points = 4;
+        static constexpr unsigned int n_points = joint_face_points;
 
         /** Gauss (true) or Lobatto (false: the nodes) points. */
         explicit InterfaceElement(const bool gauss);

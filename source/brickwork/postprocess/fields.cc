@@ -4,12 +4,18 @@
  * quantities the brick material reports, MPI subdomain and deleted cells, as
  * a VTU/PVTU time series (solution.pvd) or HDF5 + XDMF (solution.xdmf).
  */
+#include <masonry/brickwork/brick_material.h>
+#include <masonry/brickwork/one_thread.h>
+#include <masonry/brickwork/postprocessor.h>
 #include <masonry/core/output_directory.h>
 #include <masonry/core/output_file.h>
 #include <masonry/core/parameters.h>
 
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/distributed/shared_tria.h>
+#include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/numerics/data_out.h>
 
 #include <boost/archive/text_iarchive.hpp>
@@ -23,10 +29,6 @@
 #include <cstdio>
 #include <cstring>
 #include <sstream>
-
-#include "../assembly/one_thread.h"
-#include "../solution/deletion.h"
-#include "builtin.h"
 
 namespace masonry
 {
@@ -76,10 +78,10 @@ namespace masonry
           /** Cell fields from the converged states, added to @p data_out
            * (the vectors must live until the patches are built). */
           void
-          cell_fields(const ModelView            &view,
-                      const System::Vector       &ghosted,
-                      std::vector<Vector<float>> &fields,
-                      std::vector<std::string>   &names) const;
+          cell_fields(const ModelView                     &view,
+                      const TrilinosWrappers::MPI::Vector &ghosted,
+                      std::vector<Vector<float>>          &fields,
+                      std::vector<std::string>            &names) const;
 
           void
           write_hdf5(const ModelView   &view,
@@ -100,14 +102,13 @@ namespace masonry
         };
 
         void
-        Fields::cell_fields(const ModelView            &view,
-                            const System::Vector       &ghosted,
-                            std::vector<Vector<float>> &fields,
-                            std::vector<std::string>   &names) const
+        Fields::cell_fields(const ModelView                     &view,
+                            const TrilinosWrappers::MPI::Vector &ghosted,
+                            std::vector<Vector<float>>          &fields,
+                            std::vector<std::string>            &names) const
         {
           const BrickMaterial &material = view.material;
-          const unsigned int   n_cells =
-            view.system.triangulation.n_active_cells();
+          const unsigned int   n_cells  = view.triangulation().n_active_cells();
           const std::vector<std::string> reported =
             material.is_linear() ? std::vector<std::string>() :
                                    material.reported_quantities();
@@ -120,43 +121,40 @@ namespace masonry
                    "subdomain"};
           names.insert(names.end(), reported.begin(), reported.end());
           const unsigned int first_reported = 7;
-          const bool         fading =
-            view.settings.deletion.deletion_strain > 0 &&
-            (view.settings.deletion.deletion_fade_opening > 0 ||
-             view.settings.deletion.deletion_crushing_length > 0);
+          const bool         fading         = view.fades_cells();
           if (fading)
             names.emplace_back("fade");
-          if (view.settings.deletion.deletion_strain > 0)
+          if (view.deletes_cells())
             names.emplace_back("deleted");
           // the detailed model: 0 unit, 1 mortar
-          const bool regions = view.settings.mesh.detailed;
+          const bool regions = view.has_regions();
           if (regions)
             names.emplace_back("region");
           fields.assign(names.size(), Vector<float>(n_cells));
           // the strains as the assembly and the deletion compute them
           // (FEValues' reuse of translated cells' values): the fields do not
           // change with `Assembly threads'
-          const model::OneThread one_thread;
-          QGauss<3>              quadrature(2);
-          FEValues<3> fe_values(view.system.fe, quadrature, update_gradients);
+          const OneThread one_thread;
+          QGauss<3>       quadrature(2);
+          FEValues<3>     fe_values(view.dof_handler().get_fe(),
+                                quadrature,
+                                update_gradients);
           std::vector<SymmetricTensor<2, 3>> eps(8);
           const FEValuesExtractors::Vector   displacement(0);
           std::vector<double>                values(reported.size());
-          for (const auto &cell :
-               view.system.dof_handler.active_cell_iterators())
+          for (const auto &cell : view.dof_handler().active_cell_iterators())
             if (cell->is_locally_owned())
               {
                 const unsigned int c = cell->active_cell_index();
                 fields[6][c]         = cell->subdomain_id();
                 if (regions)
-                  fields.back()[c] = view.specimen.cell_region[c];
-                if (view.settings.deletion.deletion_strain > 0)
-                  fields[names.size() - 1 - regions][c] =
-                    view.specimen.deleted[c];
+                  fields.back()[c] = view.cell_region(c);
+                if (view.deletes_cells())
+                  fields[names.size() - 1 - regions][c] = view.cell_deleted(c);
                 if (fading)
                   fields[names.size() - 2 - regions][c] =
-                    view.specimen.deleted[c] ? 0. : view.specimen.fade[c];
-                if (view.specimen.deleted[c])
+                    view.cell_deleted(c) ? 0. : view.cell_fade(c);
+                if (view.cell_deleted(c))
                   continue;
                 fe_values.reinit(cell);
                 fe_values[displacement].get_function_symmetric_gradients(
@@ -167,13 +165,10 @@ namespace masonry
                     // the stress the step left (the deletion reads the
                     // same)
                     mean +=
-                      view.specimen.fade[c] *
-                      model::converged_stress(
-                        material, eps[q], view.bricks, view.specimen, c, q) /
-                      8;
+                      view.cell_fade(c) * view.brick_stress(c, q, eps[q]) / 8;
                     if (!material.is_linear())
                       {
-                        material.report(view.bricks.old(8 * c + q), values);
+                        material.report(view.brick_state(8 * c + q), values);
                         for (unsigned int k = 0; k < values.size(); ++k)
                           fields[first_reported + k][c] += values[k] / 8;
                       }
@@ -190,9 +185,9 @@ namespace masonry
                        const unsigned int step,
                        const double       time)
         {
-          const System::Vector ghosted = view.system.ghosted_copy();
-          DataOut<3>           data_out;
-          data_out.attach_dof_handler(view.system.dof_handler);
+          const TrilinosWrappers::MPI::Vector ghosted = view.solution();
+          DataOut<3>                          data_out;
+          data_out.attach_dof_handler(view.dof_handler());
           std::vector<std::string> names(3, "displacement");
           std::vector<DataComponentInterpretation::DataComponentInterpretation>
             interpretation(
@@ -209,7 +204,7 @@ namespace masonry
           for (unsigned int k = 0; k < fields.size(); ++k)
             data_out.add_data_vector(fields[k], field_names[k]);
           data_out.build_patches();
-          if (view.settings.output.hdf5)
+          if (view.output_settings().hdf5)
             write_hdf5(view, data_out, step, time);
           else
             write_vtu(view, data_out, step, time);
@@ -223,7 +218,7 @@ namespace masonry
         {
           // mesh and fields of this step in one HDF5 file, written by all
           // ranks; solution.xdmf lists the steps with their times
-          const MPI_Comm             comm = view.system.comm;
+          const MPI_Comm             comm = view.context.mpi_communicator;
           const std::string          dir  = view.context.output.path();
           DataOutBase::DataOutFilter filter(
             DataOutBase::DataOutFilterFlags(false, true));
@@ -291,7 +286,7 @@ namespace masonry
                           const unsigned int step,
                           const double       time)
         {
-          const MPI_Comm    comm = view.system.comm;
+          const MPI_Comm    comm = view.context.mpi_communicator;
           const std::string dir  = view.context.output.path();
           // each rank its piece, rank 0 the record; every file under a
           // temporary name until it is whole (as write_vtu_with_pvtu_record

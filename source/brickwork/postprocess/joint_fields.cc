@@ -6,16 +6,19 @@
  * series (interfaces.pvd) or, with `Output format = hdf5', HDF5 + XDMF
  * (interfaces.xdmf).
  */
+#include <masonry/brickwork/interface_law.h>
+#include <masonry/brickwork/postprocessor.h>
 #include <masonry/core/output_directory.h>
 #include <masonry/core/output_file.h>
 #include <masonry/core/vtu_grid.h>
 
 #include <deal.II/base/data_out_base.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/lac/trilinos_vector.h>
 
 #include <iomanip>
 #include <sstream>
-
-#include "builtin.h"
 
 namespace masonry
 {
@@ -79,7 +82,7 @@ namespace masonry
         {
           const auto        &faces   = view.joints.faces;
           const unsigned int n       = faces.size();
-          const unsigned int n_quad  = model::InterfaceElement::n_points;
+          const unsigned int n_quad  = model::joint_face_points;
           names                      = view.law.reported_quantities();
           const unsigned int n_joint = names.size();
           // the splitting interfaces' quantities follow, prefixed (zero on
@@ -94,10 +97,10 @@ namespace masonry
                         view.splitting_law ?
                           "joint_type_bed0_head1_collar2_splitting3" :
                           "joint_type_bed0_head1_collar2"});
-          std::vector<std::vector<double>> values(names.size(),
+          std::vector<std::vector<double>>    values(names.size(),
                                                   std::vector<double>(n, 0));
-          const System::Vector             ghosted = view.system.ghosted_copy();
-          std::vector<double>              reported;
+          const TrilinosWrappers::MPI::Vector ghosted = view.solution();
+          std::vector<double>                 reported;
           for (unsigned int i = 0; i < n; ++i)
             if (faces[i].owned)
               {
@@ -110,9 +113,8 @@ namespace masonry
                 reported.resize(law.reported_quantities().size());
                 for (unsigned int q = 0; q < n_quad; ++q)
                   {
-                    law.report((split ? view.splitting_points :
-                                        view.joint_points)
-                                 .old(n_quad * i + q),
+                    law.report(split ? view.splitting_state(n_quad * i + q) :
+                                       view.joint_state(n_quad * i + q),
                                reported);
                     for (unsigned int k = 0; k < reported.size(); ++k)
                       values[first + k][i] += reported[k] / n_quad;
@@ -133,7 +135,7 @@ namespace masonry
                           n,
                           MPI_DOUBLE,
                           MPI_SUM,
-                          view.system.comm);
+                          view.context.mpi_communicator);
           for (unsigned int i = 0; i < n; ++i)
             values.back()[i] = faces[i].type;
           return values;
@@ -147,14 +149,15 @@ namespace masonry
           std::vector<std::string>               names;
           const std::vector<std::vector<double>> values =
             face_values(view, names);
-          const bool        hdf5 = view.settings.output.hdf5;
+          const bool        hdf5 = view.output_settings().hdf5;
           const std::string name = "interfaces_" +
                                    Utilities::int_to_string(step, 4) +
                                    (hdf5 ? ".h5" : ".vtu");
           const std::string file = view.context.output.file(name);
           if (steps.empty() || steps.back().second != name)
             steps.emplace_back(time, name);
-          if (Utilities::MPI::this_mpi_process(view.system.comm) != 0)
+          if (Utilities::MPI::this_mpi_process(view.context.mpi_communicator) !=
+              0)
             return;
           // one quadrilateral per face pair, the values as cell data
           const auto &faces = view.joints.faces;

@@ -4,6 +4,7 @@
  * contrib/plot/wallette_report.py (plotly.js inside, opens offline), drawn
  * from the run's files and its summary when everything else is written.
  */
+#include <masonry/brickwork/postprocessor.h>
 #include <masonry/core/json.h>
 #include <masonry/core/output_directory.h>
 #include <masonry/core/output_file.h>
@@ -14,8 +15,6 @@
 #include <cstdio>
 #include <string>
 #include <unistd.h>
-
-#include "builtin.h"
 
 namespace masonry
 {
@@ -36,7 +35,7 @@ namespace masonry
           void
           after_summary(const ModelView &view, const Json &summary) override
           {
-            if (dealii::Utilities::MPI::this_mpi_process(view.system.comm) != 0)
+            if (!view.is_root())
               return;
             auto             &output = view.context.output;
             const std::string page   = output.path() + "report.html";

@@ -8,6 +8,8 @@
 
 #include <algorithm>
 
+#include "../solution/deletion.h"
+
 namespace masonry
 {
   namespace brickwork
@@ -129,6 +131,47 @@ namespace masonry
     ModelView::deletes_cells() const
     {
       return settings.deletion.deletion_strain > 0;
+    }
+
+    bool
+    ModelView::fades_cells() const
+    {
+      return deletes_cells() &&
+             (settings.deletion.deletion_fade_opening > 0 ||
+              settings.deletion.deletion_crushing_length > 0);
+    }
+
+    bool
+    ModelView::has_regions() const
+    {
+      return settings.mesh.detailed;
+    }
+
+    unsigned int
+    ModelView::n_splitting_points() const
+    {
+      return splitting_points.n_points();
+    }
+
+    ConstStateView
+    ModelView::splitting_state(const unsigned int point) const
+    {
+      return splitting_points.old(point);
+    }
+
+    const OutputSettings &
+    ModelView::output_settings() const
+    {
+      return settings.output;
+    }
+
+    dealii::SymmetricTensor<2, 3, double>
+    ModelView::brick_stress(
+      const unsigned int                           c,
+      const unsigned int                           q,
+      const dealii::SymmetricTensor<2, 3, double> &eps) const
+    {
+      return model::converged_stress(material, eps, bricks, specimen, c, q);
     }
 
     const std::vector<DeletedCell> &
