@@ -34,10 +34,13 @@ namespace masonry
       declare_parameters(dealii::ParameterHandler &prm)
       {
         declare_block_parameters(prm);
-        prm.declare_entry(
+        declare_ranged_list(
+          prm,
           "Live acceleration",
           "1; 0; 0",
-          dealii::Patterns::List(dealii::Patterns::Double(), 3, 3, ";"),
+          {-100, 100, "g per unit multiplier"},
+          3,
+          ";",
           "Acceleration of the live load per unit multiplier, in units of g "
           "(dimensionless), as `ax; ay; az': the live load on a block of "
           "weight W is λ W (ax, ay, az). `1; 0; 0' is the seismic case "

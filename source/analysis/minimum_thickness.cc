@@ -41,14 +41,15 @@ namespace masonry
                           "thickness factor (dimensionless): the bisection "
                           "stops when (s_stand − s_collapse) ≤ Tolerance × "
                           "s_stand.");
-        prm.declare_entry("Largest factor",
-                          "64",
-                          dealii::Patterns::Double(1),
-                          "Largest factor on the thickness field tried "
-                          "while bracketing (dimensionless); a vault that "
-                          "still collapses at it is reported as `mechanism' "
-                          "(it cannot stand at any thickness, e.g. a "
-                          "support is missing).");
+        declare_ranged_entry(prm,
+                             "Largest factor",
+                             "64",
+                             {1, 10000, "(dimensionless)"},
+                             "Largest factor on the thickness field tried "
+                             "while bracketing (dimensionless); a vault that "
+                             "still collapses at it is reported as `mechanism' "
+                             "(it cannot stand at any thickness, e.g. a "
+                             "support is missing).");
         prm.declare_entry("Smallest factor",
                           "1e-3",
                           dealii::Patterns::Double(1e-9, 1),

@@ -118,22 +118,6 @@ namespace masonry
         {"Geometry model/Panel/Length", -1e3, 1e3, "m"},
         {"Geometry model/Panel/Width", -1e3, 1e3, "m"},
         {"Geometry model/Cad file/Scale factor", 0, 1e3, "(dimensionless)"},
-        // joints of the rigid-block models
-        {"Interface model/Mohr coulomb/Cohesion", 0, 1e9, "Pa"},
-        {"Interface model/Mohr coulomb/Tensile strength", 0, 1e9, "Pa"},
-        {"Interface model/Mohr coulomb/Compressive strength", 0, 1e9, "Pa"},
-        {"Interface model/Mohr coulomb/Friction coefficient",
-         0,
-         10,
-         "(dimensionless)"},
-        {"LP solver/Time limit", 0, 1e7, "s"},
-        {"Minimum thickness/Largest factor", 1, 1e4, "(dimensionless)"},
-        {"Limit load/Live acceleration",
-         -100,
-         100,
-         "g per unit multiplier",
-         3,
-         ";"},
         // brickwork
         // up to 1e15 Pa: practically rigid bricks (used by the checks)
         {"Brick material/Damage plasticity/Young's modulus", 0, 1e15, "Pa"},
@@ -167,41 +151,14 @@ namespace masonry
          0,
          100,
          "(dimensionless)"},
-        {"Brick material/Elastic/Young's modulus", 0, 1e15, "Pa"},
-        {"Interface law/Normal stiffness", 0, 1e16, "Pa/m"},
-        {"Interface law/Shear stiffness", 0, 1e16, "Pa/m"},
-        {"Interface law/Viscosity", 0, 1e6, "s"},
-        {"Interface law/Bilinear/BK exponent", 0, 10, "(dimensionless)"},
-        {"Interface law/Bilinear/Cohesion", 0, 1e9, "Pa"},
-        {"Interface law/Bilinear/Tensile strength", 0, 1e9, "Pa"},
-        {"Interface law/Bilinear/Mode I fracture energy", 0, 1e6, "N/m"},
-        {"Interface law/Bilinear/Mode II fracture energy", 0, 1e6, "N/m"},
         {"Wallette/Brick length", 0, 10, "m"},
         {"Wallette/Brick width", 0, 10, "m"},
         {"Wallette/Brick height", 0, 10, "m"},
         {"Wallette/Joint thickness", 0, 1, "m"},
-        {"Wallette/Target strain", 0, 1, "(dimensionless)"},
-        {"Wallette/Amplitude increment", 0, 1, "(dimensionless)"},
         {"Wallette/Deletion strain", 0, 10, "(dimensionless)"},
         {"Wallette/Deletion fade opening", 0, 1, "m"},
         {"Wallette/Deletion crushing length", 0, 1, "m"},
         {"Wallette/Deletion stress", 0, 1e10, "Pa"},
-        {"Wallette/Gauge length", 0, 100, "m"},
-        // a tolerance below 1e-6 redoes the same step forever
-        {"Wallette/IMPL-EX damage tolerance", 1e-6, 1, "(dimensionless)"},
-        {"Wallette/Linear solver tolerance", 1e-16, 0.1, "(dimensionless)"},
-        {"Wallette/Newton tolerance", 1e-14, 0.1, "(dimensionless)"},
-        {"Wallette/Platen speed", 0, 1e3, "m/s"},
-        {"Wallette/Step growth factor", 1, 100, "(dimensionless)"},
-        // one iteration cannot converge a non-linear step: the steps are cut
-        // back to nothing (1e-10 m) instead
-        {"Wallette/Maximum Newton iterations", 2, 1000, "iterations"},
-        {"Wallette/Factorisation reuse iterations", 0, 1000, "iterations"},
-        // a chord correction must at least halve the residual to pay
-        {"Wallette/Newton chord contraction", 0, 0.5, "(dimensionless)"},
-        {"Wallette/Unloading stress", 0, 1e9, "Pa"},
-        {"Wallette/Platen direction", -1e3, 1e3, "(dimensionless)", 3, ","},
-        {"Wallette/Cycle amplitudes", 0, 1, "(dimensionless)", 1, ",", true},
       };
       for (const std::string analysis :
            {"Settlement", "Limit load", "Minimum thickness"})
@@ -435,6 +392,70 @@ namespace masonry
           }
     }
   } // namespace
+
+  namespace
+  {
+    /** @p documentation with the sentence of @p range at its end. */
+    std::string
+    with_range(const std::string &documentation,
+               const double       min,
+               const double       max,
+               const std::string &unit)
+    {
+      return documentation +
+             " Physical range, checked when the file is read: " + number(min) +
+             " to " + number(max) + " " + unit + ".";
+    }
+  } // namespace
+
+  void
+  declare_ranged_entry(dealii::ParameterHandler &prm,
+                       const std::string        &name,
+                       const std::string        &default_value,
+                       const PhysicalRange      &range,
+                       const std::string        &documentation)
+  {
+    prm.declare_entry(
+      name,
+      default_value,
+      dealii::Patterns::Double(range.min, range.max),
+      with_range(documentation, range.min, range.max, range.unit));
+  }
+
+  void
+  declare_ranged_iterations(dealii::ParameterHandler &prm,
+                            const std::string        &name,
+                            const std::string        &default_value,
+                            const int                 min,
+                            const int                 max,
+                            const std::string        &documentation)
+  {
+    prm.declare_entry(name,
+                      default_value,
+                      dealii::Patterns::Integer(min, max),
+                      with_range(documentation, min, max, "iterations"));
+  }
+
+  void
+  declare_ranged_list(dealii::ParameterHandler &prm,
+                      const std::string        &name,
+                      const std::string        &default_value,
+                      const PhysicalRange      &range,
+                      const unsigned int        length,
+                      const std::string        &separator,
+                      const std::string        &documentation)
+  {
+    prm.declare_entry(
+      name,
+      default_value,
+      dealii::Patterns::List(dealii::Patterns::Double(range.min, range.max),
+                             length,
+                             length == 0 ?
+                               dealii::Patterns::List::max_int_value :
+                               length,
+                             separator),
+      with_range(documentation, range.min, range.max, range.unit));
+  }
 
   void
   declare_parameter_ranges(dealii::ParameterHandler &prm)

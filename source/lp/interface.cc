@@ -1,3 +1,4 @@
+#include <masonry/core/parameters.h>
 #include <masonry/lp/interface.h>
 
 namespace masonry
@@ -45,13 +46,15 @@ namespace masonry
                         "readable by `clp' and `glpsol --freemps'; a "
                         "maximisation is written as the minimisation of the "
                         "negated objective). Unitless flag.");
-      prm.declare_entry("Time limit",
-                        "0",
-                        dealii::Patterns::Double(0),
-                        "Time limit of one LP solve, in seconds (as measured "
-                        "by the back-end: CPU time for Clp, wall-clock time "
-                        "for GLPK); 0 means no limit. A solve that reaches "
-                        "the limit reports status `failed'.");
+      declare_ranged_entry(
+        prm,
+        "Time limit",
+        "0",
+        {0, 1e+07, "s"},
+        "Time limit of one LP solve, in seconds (as measured "
+        "by the back-end: CPU time for Clp, wall-clock time "
+        "for GLPK); 0 means no limit. A solve that reaches "
+        "the limit reports status `failed'.");
       prm.declare_entry(
         "Warm starts",
         "true",

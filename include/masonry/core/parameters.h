@@ -86,10 +86,64 @@ namespace masonry
   one_line_message(const std::exception &exc);
 
   /**
-   * Give the numeric entries with a physical range (a table in
-   * core/parameter_ranges.cc) that range as their pattern and in their
-   * documentation, so that 1e300 or a negative strength is rejected when
-   * the file is read. Called after every plugin has declared its entries.
+   * The physical range of a numeric entry, inclusive, in SI units. A value
+   * outside it (1e300, a negative strength, ...) would only show up deep
+   * inside a solve as NaN, an endless step redo or a solver abort, so it is
+   * rejected when the file is read, with an error naming the entry, its
+   * line and the range.
+   */
+  struct PhysicalRange
+  {
+    double min = 0;
+    double max = 0;
+    /** The unit as the documentation prints it: "Pa", "m",
+     * "(dimensionless)", ... */
+    std::string unit;
+  };
+
+  /**
+   * Declare the number entry @p name in the present subsection with its
+   * physical @p range: the pattern Patterns::Double(min, max), and
+   * @p documentation ending with the range ("Physical range, checked when
+   * the file is read: 0 to 1e+09 Pa."). What a plugin calls in its
+   * declare_parameters() for each entry with a physical meaning, so that
+   * the range holds wherever the plugin's entries are declared.
+   */
+  void
+  declare_ranged_entry(dealii::ParameterHandler &prm,
+                       const std::string        &name,
+                       const std::string        &default_value,
+                       const PhysicalRange      &range,
+                       const std::string        &documentation);
+
+  /** The same for a whole number of iterations from @p min to @p max
+   * (Patterns::Integer; the unit printed is "iterations"). */
+  void
+  declare_ranged_iterations(dealii::ParameterHandler &prm,
+                            const std::string        &name,
+                            const std::string        &default_value,
+                            const int                 min,
+                            const int                 max,
+                            const std::string        &documentation);
+
+  /** The same for a list of numbers, each in @p range: exactly @p length
+   * of them, or any number of them with @p length = 0, separated by
+   * @p separator. */
+  void
+  declare_ranged_list(dealii::ParameterHandler &prm,
+                      const std::string        &name,
+                      const std::string        &default_value,
+                      const PhysicalRange      &range,
+                      const unsigned int        length,
+                      const std::string        &separator,
+                      const std::string        &documentation);
+
+  /**
+   * Give the numeric entries of the core's range table
+   * (core/parameter_ranges.cc: those not yet declared with
+   * declare_ranged_entry() by their plugin) that range as their pattern and
+   * in their documentation. Called after every plugin has declared its
+   * entries.
    */
   void
   declare_parameter_ranges(dealii::ParameterHandler &prm);

@@ -68,35 +68,40 @@ namespace masonry
       static void
       declare_parameters(dealii::ParameterHandler &prm)
       {
-        prm.declare_entry("Tensile strength",
-                          "0.2e6",
-                          dealii::Patterns::Double(0),
-                          "Tensile strength f_t of the joint, Pa (> 0); "
-                          "typical 0.16-0.25 MPa.");
-        prm.declare_entry("Cohesion",
-                          "0.28e6",
-                          dealii::Patterns::Double(0),
-                          "Shear strength (cohesion) c of the joint, Pa "
-                          "(> 0); typical 1.4 f_t.");
-        prm.declare_entry("Mode I fracture energy",
-                          "15",
-                          dealii::Patterns::Double(0),
-                          "Fracture energy G_I in pure opening, J/m^2 = "
-                          "N/m (> 0, at least f_t^2 / (2 k_n)); typical "
-                          "12-18 N/m.");
-        prm.declare_entry("Mode II fracture energy",
-                          "100",
-                          dealii::Patterns::Double(0),
-                          "Fracture energy G_II in pure shear, J/m^2 = N/m "
-                          "(> 0, at least c^2 / (2 k_s)); typical 50-125 "
-                          "N/m.");
-        prm.declare_entry("BK exponent",
-                          "2",
-                          dealii::Patterns::Double(0),
-                          "Exponent eta of the Benzeggagh-Kenane mixed-mode "
-                          "criterion G_c = G_I + (G_II - G_I) (beta^2 / (1 "
-                          "+ beta^2))^eta, beta = slip / normal opening "
-                          "(dimensionless, > 0).");
+        declare_ranged_entry(prm,
+                             "Tensile strength",
+                             "0.2e6",
+                             {0, 1e+09, "Pa"},
+                             "Tensile strength f_t of the joint, Pa (> 0); "
+                             "typical 0.16-0.25 MPa.");
+        declare_ranged_entry(prm,
+                             "Cohesion",
+                             "0.28e6",
+                             {0, 1e+09, "Pa"},
+                             "Shear strength (cohesion) c of the joint, Pa "
+                             "(> 0); typical 1.4 f_t.");
+        declare_ranged_entry(prm,
+                             "Mode I fracture energy",
+                             "15",
+                             {0, 1e+06, "N/m"},
+                             "Fracture energy G_I in pure opening, J/m^2 = "
+                             "N/m (> 0, at least f_t^2 / (2 k_n)); typical "
+                             "12-18 N/m.");
+        declare_ranged_entry(prm,
+                             "Mode II fracture energy",
+                             "100",
+                             {0, 1e+06, "N/m"},
+                             "Fracture energy G_II in pure shear, J/m^2 = N/m "
+                             "(> 0, at least c^2 / (2 k_s)); typical 50-125 "
+                             "N/m.");
+        declare_ranged_entry(prm,
+                             "BK exponent",
+                             "2",
+                             {0, 10, "(dimensionless)"},
+                             "Exponent eta of the Benzeggagh-Kenane mixed-mode "
+                             "criterion G_c = G_I + (G_II - G_I) (beta^2 / (1 "
+                             "+ beta^2))^eta, beta = slip / normal opening "
+                             "(dimensionless, > 0).");
         prm.declare_entry(
           "Maximum damage",
           "1",

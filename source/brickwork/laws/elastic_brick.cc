@@ -16,10 +16,11 @@ namespace masonry
       static void
       declare_parameters(dealii::ParameterHandler &prm)
       {
-        prm.declare_entry("Young's modulus",
-                          "10e9",
-                          dealii::Patterns::Double(0),
-                          "Young's modulus of the bricks, Pa (> 0).");
+        declare_ranged_entry(prm,
+                             "Young's modulus",
+                             "10e9",
+                             {0, 1e+15, "Pa"},
+                             "Young's modulus of the bricks, Pa (> 0).");
         prm.declare_entry("Poisson's ratio",
                           "0.15",
                           dealii::Patterns::Double(-1, 0.5),

@@ -43,25 +43,28 @@ namespace masonry
     void
     InterfaceLaw::declare_common_parameters(dealii::ParameterHandler &prm)
     {
-      prm.declare_entry(
+      declare_ranged_entry(
+        prm,
         "Normal stiffness",
         "2.5e11",
-        dealii::Patterns::Double(0),
+        {0, 1e+16, "Pa/m"},
         "Penalty stiffness k_n of the joint normal to it, Pa/m (> 0). For "
         "enlarged bricks Lourenco and Rots give k_n = E_u E_m / (h_m (E_u - "
         "E_m)) with the unit and mortar moduli E_u, E_m (Pa) and the joint "
         "thickness h_m (m): E_u = 10 GPa, E_m = 2 GPa, h_m = 10 mm give "
         "2.5e11 Pa/m.");
-      prm.declare_entry("Shear stiffness",
-                        "1.0e11",
-                        dealii::Patterns::Double(0),
-                        "Penalty stiffness k_s of the joint in both "
-                        "directions of slip, Pa/m (> 0); the same formula "
-                        "as k_n with the shear moduli G_u, G_m.");
-      prm.declare_entry(
+      declare_ranged_entry(prm,
+                           "Shear stiffness",
+                           "1.0e11",
+                           {0, 1e+16, "Pa/m"},
+                           "Penalty stiffness k_s of the joint in both "
+                           "directions of slip, Pa/m (> 0); the same formula "
+                           "as k_n with the shear moduli G_u, G_m.");
+      declare_ranged_entry(
+        prm,
         "Viscosity",
         "0",
-        dealii::Patterns::Double(0),
+        {0, 1e+06, "s"},
         "Viscous regularisation of the joint damage, s (>= 0; 0: none): "
         "the damage used is d_v = (d + (mu / dt) d_v,old) / (1 + mu / dt), "
         "with dt the pseudo-time of the step (platen displacement increment "

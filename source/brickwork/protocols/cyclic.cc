@@ -24,34 +24,40 @@ namespace masonry
         declare_parameters(dealii::ParameterHandler &prm)
         {
           using dealii::Patterns::Double;
-          prm.declare_entry(
+          declare_ranged_list(
+            prm,
             "Cycle amplitudes",
             "",
-            dealii::Patterns::List(Double(0)),
+            {0, 1, "(dimensionless)"},
+            0,
+            ",",
             "Strains (platen displacement / height, dimensionless, "
             "increasing) at which the cycles of the `cyclic' protocol turn "
             "back. Empty: k times `Amplitude increment' for k = 1, 2, ... up "
             "to `Target strain'.");
-          prm.declare_entry("Amplitude increment",
-                            "0.0005",
-                            Double(0),
-                            "Strain added from one amplitude to the next "
-                            "when `Cycle amplitudes' is empty "
-                            "(dimensionless, > 0).");
+          declare_ranged_entry(prm,
+                               "Amplitude increment",
+                               "0.0005",
+                               {0, 1, "(dimensionless)"},
+                               "Strain added from one amplitude to the next "
+                               "when `Cycle amplitudes' is empty "
+                               "(dimensionless, > 0).");
           prm.declare_entry("Cycles per amplitude",
                             "1",
                             dealii::Patterns::Integer(1, 100),
                             "Load-unload cycles at each amplitude; 2 or more "
                             "give the common-point and stability-point "
                             "curves.");
-          prm.declare_entry("Unloading stress",
-                            "0.1e6",
-                            Double(0),
-                            "An unloading ends when the stress (platen force "
-                            "/ gross area) has dropped to this, Pa (>= 0): "
-                            "the small target force of a test. Its last step "
-                            "is aimed at it; the leg ends at the first step "
-                            "at or below 1.01 times it.");
+          declare_ranged_entry(
+            prm,
+            "Unloading stress",
+            "0.1e6",
+            {0, 1e+09, "Pa"},
+            "An unloading ends when the stress (platen force "
+            "/ gross area) has dropped to this, Pa (>= 0): "
+            "the small target force of a test. Its last step "
+            "is aimed at it; the leg ends at the first step "
+            "at or below 1.01 times it.");
         }
 
         void

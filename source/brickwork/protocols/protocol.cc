@@ -29,16 +29,18 @@ namespace masonry
     Protocol::declare_common_parameters(dealii::ParameterHandler &prm)
     {
       using dealii::Patterns::Double;
-      prm.declare_entry("Target strain",
-                        "0.003",
-                        Double(0),
-                        "Final platen displacement divided by the height "
-                        "of the wallette (dimensionless, > 0; the "
-                        "displacement in m is this times the height).");
-      prm.declare_entry(
+      declare_ranged_entry(prm,
+                           "Target strain",
+                           "0.003",
+                           {0, 1, "(dimensionless)"},
+                           "Final platen displacement divided by the height "
+                           "of the wallette (dimensionless, > 0; the "
+                           "displacement in m is this times the height).");
+      declare_ranged_entry(
+        prm,
         "Platen speed",
         "1e-5",
-        Double(0),
+        {0, 1000, "m/s"},
         "Speed of the top platen, m/s (> 0): the pseudo-time of a step "
         "is its platen displacement / this speed. It matters only for "
         "the viscous regularisation of the brick and joint damage "

@@ -47,18 +47,24 @@ namespace masonry
         using dealii::Patterns::Double;
         using dealii::Patterns::Integer;
         using dealii::Patterns::Selection;
-        prm.declare_entry("Maximum Newton iterations",
-                          "20",
-                          Integer(1, 1000),
-                          "Newton-Raphson iterations of a step before it is "
-                          "cut back.");
-        prm.declare_entry("Newton tolerance",
-                          "1e-8",
-                          Double(0),
-                          "Convergence when the out-of-balance force (l2 "
-                          "norm over the free DOFs, N) is below this times "
-                          "the norm of the platen reactions "
-                          "(dimensionless).");
+        // one iteration cannot converge a non-linear step: the steps are cut
+        // back to nothing (1e-10 m) instead
+        declare_ranged_iterations(
+          prm,
+          "Maximum Newton iterations",
+          "20",
+          2,
+          1000,
+          "Newton-Raphson iterations of a step before it is "
+          "cut back.");
+        declare_ranged_entry(prm,
+                             "Newton tolerance",
+                             "1e-8",
+                             {1e-14, 0.1, "(dimensionless)"},
+                             "Convergence when the out-of-balance force (l2 "
+                             "norm over the free DOFs, N) is below this times "
+                             "the norm of the platen reactions "
+                             "(dimensionless).");
         prm.declare_entry("Line search",
                           "true",
                           Bool(),
@@ -82,10 +88,12 @@ namespace masonry
           "that moved the collapse of the wall by a cycle "
           "(doc/notes/wallette-solver-speed.md): "
           "`constant' is the default.");
-        prm.declare_entry(
+        // a chord correction must at least halve the residual to pay
+        declare_ranged_entry(
+          prm,
           "Newton chord contraction",
           "0.1",
-          Double(0),
+          {0, 0.5, "(dimensionless)"},
           "A full Newton correction (line search at its first trial) that "
           "leaves at most this fraction of the residual is followed by a "
           "chord correction: the same LU factorisation solves for the new "

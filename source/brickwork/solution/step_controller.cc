@@ -45,13 +45,14 @@ namespace masonry
                           "when it is already smaller than the nominal step "
                           "/ 2^N (tiny converged steps between failures "
                           "would otherwise halve it without end).");
-        prm.declare_entry("Step growth factor",
-                          "2",
-                          Double(1),
-                          "Factor on the step after an easy step "
-                          "(dimensionless, >= 1); also the largest factor "
-                          "by which IMPL-EX extrapolates the last step's "
-                          "changes of the internal variables.");
+        declare_ranged_entry(prm,
+                             "Step growth factor",
+                             "2",
+                             {1, 100, "(dimensionless)"},
+                             "Factor on the step after an easy step "
+                             "(dimensionless, >= 1); also the largest factor "
+                             "by which IMPL-EX extrapolates the last step's "
+                             "changes of the internal variables.");
         prm.declare_entry("Maximum steps",
                           "0",
                           Integer(0),
@@ -72,10 +73,12 @@ namespace masonry
           "(log.txt, summary.json) says where, and the last state is written; "
           "the rest of the protocol is not run. 0: never (the run goes on "
           "to the last amplitude whatever the specimen still carries).");
-        prm.declare_entry(
+        // a tolerance below 1e-6 redoes the same step forever
+        declare_ranged_entry(
+          prm,
           "IMPL-EX damage tolerance",
           "0.05",
-          Double(0),
+          {1e-06, 1, "(dimensionless)"},
           "IMPL-EX step control (dimensionless, > 0): when the largest "
           "difference between the updated and the extrapolated damage of "
           "a step exceeds this, the step is redone smaller in proportion "

@@ -35,26 +35,30 @@ namespace masonry
           "directions (full friction); `free': they only act along z "
           "(frictionless; rigid motions in the plane are removed by "
           "pinning two points of the bottom face).");
-        prm.declare_entry(
+        declare_ranged_list(
+          prm,
           "Platen direction",
           "0, 0, -1",
-          dealii::Patterns::List(Double(), 3, 3),
+          {-1000, 1000, "(dimensionless)"},
+          3,
+          ",",
           "Direction of the top platen's motion (x, y, z; normalised): "
           "`0, 0, -1' compresses the wallette, `0, 0, 1' pulls it, `1, 0, "
           "0' shears it (needs fixed platens). Stresses and strains are "
           "reported along this direction.");
-        prm.declare_entry("Gauge length",
-                          "0",
-                          Double(0),
-                          "Length of a virtual displacement transducer "
-                          "(LVDT) on the front face (y = 0) at mid-length, "
-                          "centred at mid-height, m (>= 0; its ends snap "
-                          "to the nearest mesh points, the length used is "
-                          "reported as gauge_length). Its strain along the "
-                          "platen direction is written as gauge_strain in "
-                          "curve.csv, with gauge_strain_at_peak and "
-                          "initial_modulus_gauge in summary.json; 0: no "
-                          "gauge (strain over the whole height only).");
+        declare_ranged_entry(prm,
+                             "Gauge length",
+                             "0",
+                             {0, 100, "m"},
+                             "Length of a virtual displacement transducer "
+                             "(LVDT) on the front face (y = 0) at mid-length, "
+                             "centred at mid-height, m (>= 0; its ends snap "
+                             "to the nearest mesh points, the length used is "
+                             "reported as gauge_length). Its strain along the "
+                             "platen direction is written as gauge_strain in "
+                             "curve.csv, with gauge_strain_at_peak and "
+                             "initial_modulus_gauge in summary.json; 0: no "
+                             "gauge (strain over the whole height only).");
       }
 
       void

@@ -23,32 +23,36 @@ namespace masonry
         static void
         declare_parameters(dealii::ParameterHandler &prm)
         {
-          prm.declare_entry("Cohesion",
-                            "0",
-                            dealii::Patterns::Double(0),
-                            "Cohesion c of the joints, Pa: the shear "
-                            "strength at zero normal stress.");
-          prm.declare_entry("Friction coefficient",
-                            "0.5",
-                            dealii::Patterns::Double(0),
-                            "tan φ of the joints, dimensionless. The flow "
-                            "rule is associative: sliding comes with an "
-                            "opening of tan φ per unit slip (dilatancy), so "
-                            "sliding collapse loads are upper bounds of "
-                            "those with non-associative friction.");
-          prm.declare_entry("Tensile strength",
-                            "0",
-                            dealii::Patterns::Double(0),
-                            "Tension cut-off f_t, Pa: the largest normal "
-                            "tensile stress. The joint opens at no more "
-                            "than min(f_t, c / tan φ) per unit area.");
-          prm.declare_entry("Compressive strength",
-                            "0",
-                            dealii::Patterns::Double(0),
-                            "Compression cap f_c, Pa: the largest normal "
-                            "compressive stress (a plane σ_n ≥ −f_c). 0 "
-                            "means no cap (infinitely strong in "
-                            "compression).");
+          declare_ranged_entry(prm,
+                               "Cohesion",
+                               "0",
+                               {0, 1e+09, "Pa"},
+                               "Cohesion c of the joints, Pa: the shear "
+                               "strength at zero normal stress.");
+          declare_ranged_entry(prm,
+                               "Friction coefficient",
+                               "0.5",
+                               {0, 10, "(dimensionless)"},
+                               "tan φ of the joints, dimensionless. The flow "
+                               "rule is associative: sliding comes with an "
+                               "opening of tan φ per unit slip (dilatancy), so "
+                               "sliding collapse loads are upper bounds of "
+                               "those with non-associative friction.");
+          declare_ranged_entry(prm,
+                               "Tensile strength",
+                               "0",
+                               {0, 1e+09, "Pa"},
+                               "Tension cut-off f_t, Pa: the largest normal "
+                               "tensile stress. The joint opens at no more "
+                               "than min(f_t, c / tan φ) per unit area.");
+          declare_ranged_entry(prm,
+                               "Compressive strength",
+                               "0",
+                               {0, 1e+09, "Pa"},
+                               "Compression cap f_c, Pa: the largest normal "
+                               "compressive stress (a plane σ_n ≥ −f_c). 0 "
+                               "means no cap (infinitely strong in "
+                               "compression).");
           prm.declare_entry("Shear directions",
                             "8",
                             dealii::Patterns::Integer(4, 360),

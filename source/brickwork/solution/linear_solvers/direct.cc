@@ -2,6 +2,8 @@
  * @file
  * `Linear solver = direct': sparse LU by MUMPS through Amesos.
  */
+#include <masonry/core/parameters.h>
+
 #include "direct_solver.h"
 
 namespace masonry
@@ -23,10 +25,12 @@ namespace masonry
           static void
           declare_parameters(dealii::ParameterHandler &prm)
           {
-            prm.declare_entry(
+            declare_ranged_iterations(
+              prm,
               "Factorisation reuse iterations",
               "0",
-              dealii::Patterns::Integer(0, 1000),
+              0,
+              1000,
               "`Linear solver = direct' only: a Newton correction is first "
               "solved by GMRES with the last LU factorisation (of an earlier "
               "tangent) as the preconditioner, to `Linear solver tolerance'; "

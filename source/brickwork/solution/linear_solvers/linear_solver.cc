@@ -32,11 +32,12 @@ namespace masonry
     void
     LinearSolver::declare_common_parameters(dealii::ParameterHandler &prm)
     {
-      prm.declare_entry("Linear solver tolerance",
-                        "1e-10",
-                        dealii::Patterns::Double(0),
-                        "Relative residual tolerance of the iterative "
-                        "linear solvers (dimensionless).");
+      declare_ranged_entry(prm,
+                           "Linear solver tolerance",
+                           "1e-10",
+                           {1e-16, 0.1, "(dimensionless)"},
+                           "Relative residual tolerance of the iterative "
+                           "linear solvers (dimensionless).");
     }
 
     void
