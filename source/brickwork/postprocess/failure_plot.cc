@@ -89,18 +89,37 @@ namespace masonry
           finish(const ModelView &view, Json &summary) override;
 
         private:
+          /**
+           * The cells (cell_size values each) and the open joint faces
+           * (face_size values each) of every rank, gathered on the root;
+           * false on the other ranks, which have nothing more to do.
+           */
+          bool
+          gather(const ModelView     &view,
+                 std::vector<double> &cells,
+                 std::vector<double> &faces) const;
+
+          /** failure.json: the picture's data, for wallette_failure.py and
+           * the user; @p factor: the displacement magnification used. */
+          void
+          write_data(const ModelView           &view,
+                     const std::vector<double> &cells,
+                     const std::vector<double> &faces,
+                     const double               factor) const;
+
           double       magnification = 0;
           double       threshold     = 1e-4;
           unsigned int width = 1600, height = 800;
         };
 
-        void
-        FailurePlot::finish(const ModelView &view, Json &summary)
+        bool
+        FailurePlot::gather(const ModelView     &view,
+                            std::vector<double> &cells,
+                            std::vector<double> &faces) const
         {
           const TrilinosWrappers::MPI::Vector u = view.solution();
           const MPI_Comm comm                   = view.context.mpi_communicator;
           // this rank's cells and open faces
-          std::vector<double>  cells, faces;
           const BrickMaterial &material = view.material;
           const unsigned int   n_damage =
             material.is_linear() ? 0 : material.damage_names().size();
@@ -155,13 +174,67 @@ namespace masonry
           const auto all_cells = Utilities::MPI::gather(comm, cells, 0);
           const auto all_faces = Utilities::MPI::gather(comm, faces, 0);
           if (Utilities::MPI::this_mpi_process(comm) != 0)
-            return;
+            return false;
           cells.clear();
           faces.clear();
           for (const auto &c : all_cells)
             cells.insert(cells.end(), c.begin(), c.end());
           for (const auto &f : all_faces)
             faces.insert(faces.end(), f.begin(), f.end());
+          return true;
+        }
+
+        void
+        FailurePlot::write_data(const ModelView           &view,
+                                const std::vector<double> &cells,
+                                const std::vector<double> &faces,
+                                const double               factor) const
+        {
+          const BrickMaterial &material = view.material;
+          const unsigned int   n_damage =
+            material.is_linear() ? 0 : material.damage_names().size();
+          const unsigned int n_cells = cells.size() / cell_size;
+          const unsigned int n_open  = faces.size() / face_size;
+          const CurvePoint  &last    = view.curve.back();
+          // the picture's data, for wallette_failure.py and the user
+          Json data                 = Json::object();
+          data["width"]             = width;
+          data["height"]            = height;
+          data["magnification"]     = factor;
+          data["opening_threshold"] = threshold;
+          data["strain"]            = last.strain;
+          data["stress"]            = last.stress;
+          std::string damage        = n_damage > 0 ? "largest of " : "none";
+          if (n_damage > 0)
+            {
+              const auto names = material.damage_names();
+              for (unsigned int k = 0; k < names.size(); ++k)
+                damage += (k ? ", " : "") + names[k];
+            }
+          data["damage"] = damage;
+          Json rows      = Json::array();
+          for (unsigned int c = 0; c < n_cells; ++c)
+            rows.push_back(
+              std::vector<double>(cells.begin() + c * cell_size,
+                                  cells.begin() + (c + 1) * cell_size));
+          data["cells"] = std::move(rows);
+          rows          = Json::array();
+          for (unsigned int f = 0; f < n_open; ++f)
+            rows.push_back(
+              std::vector<double>(faces.begin() + f * face_size,
+                                  faces.begin() + (f + 1) * face_size));
+          data["joints"] = std::move(rows);
+          OutputFile out(view.context.output.file("failure.json"));
+          out << data.dump(1) << "\n";
+          out.close();
+        }
+
+        void
+        FailurePlot::finish(const ModelView &view, Json &summary)
+        {
+          std::vector<double> cells, faces;
+          if (!gather(view, cells, faces))
+            return;
 
           // automatic factor: the largest displacement of a remaining cell
           // becomes a tenth of the height
@@ -178,7 +251,6 @@ namespace masonry
           const double       factor    = magnification > 0 ? magnification :
                                          largest > 0 ? 0.1 * view.height() / largest :
                                                        1.0;
-          const unsigned int n_cells   = cells.size() / cell_size;
           const unsigned int n_open    = faces.size() / face_size;
           unsigned int       n_deleted = 0, n_damaged = 0;
           for (std::size_t c = 0; c < cells.size(); c += cell_size)
@@ -190,40 +262,7 @@ namespace masonry
           for (std::size_t f = 0; f < faces.size(); f += face_size)
             ++open_of_type[std::min<unsigned int>(faces[f], 3)];
 
-          const CurvePoint &last = view.curve.back();
-          {
-            // the picture's data, for wallette_failure.py and the user
-            Json data                 = Json::object();
-            data["width"]             = width;
-            data["height"]            = height;
-            data["magnification"]     = factor;
-            data["opening_threshold"] = threshold;
-            data["strain"]            = last.strain;
-            data["stress"]            = last.stress;
-            std::string damage        = n_damage > 0 ? "largest of " : "none";
-            if (n_damage > 0)
-              {
-                const auto names = material.damage_names();
-                for (unsigned int k = 0; k < names.size(); ++k)
-                  damage += (k ? ", " : "") + names[k];
-              }
-            data["damage"] = damage;
-            Json rows      = Json::array();
-            for (unsigned int c = 0; c < n_cells; ++c)
-              rows.push_back(
-                std::vector<double>(cells.begin() + c * cell_size,
-                                    cells.begin() + (c + 1) * cell_size));
-            data["cells"] = std::move(rows);
-            rows          = Json::array();
-            for (unsigned int f = 0; f < n_open; ++f)
-              rows.push_back(
-                std::vector<double>(faces.begin() + f * face_size,
-                                    faces.begin() + (f + 1) * face_size));
-            data["joints"] = std::move(rows);
-            OutputFile out(view.context.output.file("failure.json"));
-            out << data.dump(1) << "\n";
-            out.close();
-          }
+          write_data(view, cells, faces, factor);
 
           Json &s                         = summary["failure_plot"];
           s["displacement_magnification"] = factor;
