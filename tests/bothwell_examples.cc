@@ -30,14 +30,11 @@ namespace
   std::string
   example(const std::string &name)
   {
-    std::ifstream in(std::string(MASONRY_SOURCE_DIR) + "/prm/examples/" + name +
-                     ".prm");
-    std::stringstream text;
-    text << in.rdbuf();
-    check(!text.str().empty(), name + " is read");
+    const std::string text = example_text(name);
+    check(!text.empty(), name + " is read");
     // the data of the run, no pictures or pages
-    return text.str() + "subsection Postprocess\n  subsection Rigid blocks\n"
-                        "    set List of postprocessors = cracks\n  end\nend\n";
+    return text + "subsection Postprocess\n  subsection Rigid blocks\n"
+                  "    set List of postprocessors = cracks\n  end\nend\n";
   }
 
   std::string

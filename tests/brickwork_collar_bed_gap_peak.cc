@@ -38,12 +38,9 @@ namespace
   std::string
   wall(const std::string &gap)
   {
-    std::ifstream     in(std::string(MASONRY_SOURCE_DIR) +
-                     "/prm/examples/wallette-double-monotonic.prm");
-    std::stringstream text;
-    text << in.rdbuf();
-    check(!text.str().empty(), "the double monotonic example is read");
-    return text.str() +
+    const std::string text = example_text("wallette-double-monotonic");
+    check(!text.empty(), "the double monotonic example is read");
+    return text +
            "subsection Wallette\n"
            "  set Collar bed gap = " +
            gap +

@@ -49,12 +49,9 @@ namespace
   std::string
   wall(const std::string &unloading)
   {
-    std::ifstream     in(std::string(MASONRY_SOURCE_DIR) +
-                     "/prm/examples/wallette-single-cyclic.prm");
-    std::stringstream text;
-    text << in.rdbuf();
-    check(!text.str().empty(), "the single cyclic example is read");
-    return text.str() +
+    const std::string text = example_text("wallette-single-cyclic");
+    check(!text.empty(), "the single cyclic example is read");
+    return text +
            "subsection Wallette\n"
            "  set Courses = 3\n"
            "  set Elements along the length = 2\n"

@@ -184,6 +184,9 @@ namespace brickwork_tests
   using vault_tests::check;
   using vault_tests::relative;
   using vault_tests::run;
+#ifdef MASONRY_SOURCE_DIR
+  using vault_tests::example_text;
+#endif
 
   /** The columns of results/NAME/FILE (a CSV file of numbers with one
    * header line), row by row. */

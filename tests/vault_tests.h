@@ -18,6 +18,24 @@
 
 namespace vault_tests
 {
+#ifdef MASONRY_SOURCE_DIR
+  /**
+   * The text of the shipped example prm/examples/@p name.prm ("" if it
+   * cannot be read), for a test that runs an example with overrides
+   * appended (only in the tests compiled with MASONRY_SOURCE_DIR, see
+   * tests/CMakeLists.txt).
+   */
+  inline std::string
+  example_text(const std::string &name)
+  {
+    std::ifstream in(std::string(MASONRY_SOURCE_DIR) + "/prm/examples/" + name +
+                     ".prm");
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }
+#endif
+
   /**
    * Write @p prm_text to NAME.prm (with `Output directory = results/NAME`),
    * run masonry on it with screen output discarded and return its
