@@ -2,7 +2,8 @@
  * @file
  * The linear solvers of the wallette's Newton corrections (`subsection
  * Wallette / set Linear solver = ...'): a plugin family, one file per
- * solver (source/brickwork/solution/linear_solvers/). A solver is chosen
+ * solver (source/brickwork/solution/linear_solvers/; a test defines one of
+ * its own, tests/brickwork_custom_solver.cc). A solver is chosen
  * once a run and keeps what it can reuse (a symbolic analysis, the
  * factorisation of the initial tangent, a preconditioner) between solves.
  * The solvers' entries stand in `subsection Wallette' next to the
