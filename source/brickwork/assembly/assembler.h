@@ -207,6 +207,21 @@ namespace masonry
         BrickPoint
         brick_point(const unsigned int c, const double time_step) const;
 
+        /** The units' factors of the nonlocal average at system.ghosted
+         * into rho (`Nonlocal length' > 0; the average is built at the
+         * first call). */
+        void
+        update_nonlocal_factors();
+        /** The brick points' new states at system.ghosted (@p time_step:
+         * the pseudo-time step); returns the largest change of a damage
+         * against its extrapolation (non-finite changes are flagged in
+         * non_finite_bits instead). */
+        double
+        update_brick_states(const double time_step);
+        /** The same for the points of the joints. */
+        double
+        update_joint_states(const double time_step);
+
         /** Combines the ranks' non_finite_bits (collective). */
         void
         gather_non_finite();

@@ -85,6 +85,24 @@ namespace masonry
         if (!(p.friction >= 0) || !(p.residual_friction >= 0) ||
             !(p.dilatancy >= 0))
           bad("Friction, Residual friction and Dilatancy must be >= 0");
+        // the round-off of sigma tan(phi) in the Coulomb yield function,
+        // about 1.1e-16 tan(phi) |sigma| with |sigma| up to the cap
+        // strength, must stay below the return's tolerance (1e-9 of the cap
+        // strength, see admissible()): 1e6 keeps a factor of 10. A steeper
+        // cone left no admissible return (the splitting interfaces of a
+        // unit whose tensile strength was 1e-300 Pa had tan(phi) = 1e153)
+        for (const auto &[value, name] :
+             {std::pair<double, const char *>(p.friction, "Friction"),
+              std::pair<double, const char *>(p.residual_friction,
+                                              "Residual friction")})
+          if (value > 1e6)
+            {
+              std::ostringstream m;
+              m << name << " must be at most 1e6 (tan(phi); the return "
+                << "mapping's round-off of sigma tan(phi) would exceed its "
+                << "tolerance), got " << value;
+              bad(m.str());
+            }
         if (p.cap_strength < p.tensile_strength)
           bad("Cap strength must not be below Tensile strength (a cap of 1 "
               "Pa left the return mapping without an admissible state)");

@@ -603,6 +603,142 @@ namespace masonry
       return e;
     }
 
+    /** The point and its trial state while update() returns it onto the
+     * envelopes. */
+    struct DamagePlasticityBrick::Trial
+    {
+      /** The point's strength factor phi, its crack-band length l (m),
+       * its nonlocal factors of the tensile and compressive measures and
+       * the factor beta of `Cracked compression softening' (all
+       * dimensionless but l). */
+      double phi = 1, l = 0, rho_t = 1, rho_c = 1, beta = 1;
+      /** The positive and negative parts of the effective stress, Pa. */
+      SymmetricTensor<2, 3> plus, minus;
+      /** Their measures tau_t and tau_c (Pa) and the tensile and
+       * compressive damages of the envelopes reached. */
+      double tau_t = 0, tau_c = 0, d_t = 0, d_c = 0;
+    };
+
+    double
+    DamagePlasticityBrick::threshold_scale(const double tau,
+                                           const double damage,
+                                           const double f,
+                                           const double other,
+                                           const double T,
+                                           const double phi) const
+    {
+      return interaction ? scale_onto(tau,
+                                      (1 - damage) * tau / (phi * f),
+                                      std::min(other, 0.5),
+                                      T) :
+                           T / tau;
+    }
+
+    bool
+    DamagePlasticityBrick::compressive_return(Trial &t, State &updated) const
+    {
+      const double phi = t.phi, l = t.l, rho_t = t.rho_t, rho_c = t.rho_c;
+      SymmetricTensor<2, 3> &plus = t.plus, &minus = t.minus;
+      double &tau_t = t.tau_t, &tau_c = t.tau_c, &d_t = t.d_t, &d_c = t.d_c;
+      const double beta    = t.beta;
+      bool         crushed = false;
+      const double m       = interaction_share(tau_c, tau_t, d_c, d_t, phi);
+      const double tau     = tau_c / ((1 - m) * beta);
+      const double p_old =
+        updated.kappa_c > 0 ? compression(updated.kappa_c, l, phi).plastic : 0.;
+      const double e = p_old + tau / E;
+      if (e > updated.kappa_c && e > ratio * phi * f_c / E && tau_c > 0)
+        {
+          const EnvelopePoint env = compression(e, l, phi);
+          const double        T   = E * (e - env.plastic);
+          const double        s   = threshold_scale(tau_c,
+                                           env.damage,
+                                           f_c,
+                                           (1 - d_t) * tau_t / (phi * f_t),
+                                           beta * T,
+                                           phi);
+          if (radial_flow)
+            {
+              updated.plastic_strain += (1 - s) * compliance(minus);
+              minus *= s;
+              tau_c *= s;
+            }
+          else
+            flow(minus,
+                 1 - env.damage,
+                 d_t,
+                 phi,
+                 rho_t,
+                 rho_c,
+                 beta * T,
+                 updated,
+                 plus,
+                 tau_t,
+                 tau_c);
+          updated.kappa_c     = e;
+          updated.threshold_c = T;
+          d_c                 = env.damage;
+          crushed             = true;
+        }
+      return crushed;
+    }
+
+    bool
+    DamagePlasticityBrick::tensile_return(Trial &t, State &updated) const
+    {
+      const double phi = t.phi, l = t.l, rho_t = t.rho_t, rho_c = t.rho_c;
+      SymmetricTensor<2, 3> &plus = t.plus, &minus = t.minus;
+      double &tau_t = t.tau_t, &tau_c = t.tau_c, &d_t = t.d_t, &d_c = t.d_c;
+      bool    cracked  = false;
+      const double m   = interaction_share(tau_c, tau_t, d_c, d_t, phi);
+      const double tau = tau_t / (1 - m);
+      const double p_old =
+        updated.kappa_t > 0 ? tension(updated.kappa_t, l, phi).plastic : 0.;
+      const double e = p_old + tau / E;
+      if (e > updated.kappa_t && e > phi * f_t / E && tau_t > 0)
+        {
+          if (crack_flow)
+            {
+              const double        e_new = crack_return(e,
+                                                updated.kappa_t,
+                                                p_old,
+                                                d_c,
+                                                l,
+                                                phi,
+                                                rho_t,
+                                                rho_c,
+                                                updated,
+                                                plus,
+                                                minus,
+                                                tau_t,
+                                                tau_c);
+              const EnvelopePoint env   = tension(e_new, l, phi);
+              cracked                   = e_new > updated.kappa_t;
+              updated.kappa_t           = e_new;
+              updated.threshold_t       = E * (e_new - env.plastic);
+              d_t                       = env.damage;
+            }
+          else
+            {
+              const EnvelopePoint env = tension(e, l, phi);
+              const double        T   = E * (e - env.plastic);
+              const double        s   = threshold_scale(tau_t,
+                                               env.damage,
+                                               f_t,
+                                               (1 - d_c) * tau_c / (phi * f_c),
+                                               T,
+                                               phi);
+              updated.plastic_strain += (1 - s) * compliance(plus);
+              updated.crack_strain += (1 - s) * compliance(plus);
+              plus *= s;
+              updated.kappa_t     = e;
+              updated.threshold_t = T;
+              d_t                 = env.damage;
+            }
+        }
+      return cracked;
+    }
+
     void
     DamagePlasticityBrick::update(const SymmetricTensor<2, 3> &strain,
                                   const State                 &old,
@@ -610,23 +746,22 @@ namespace masonry
                                   State                       &updated,
                                   SymmetricTensor<2, 3>       &stress) const
     {
-      const double phi   = point.strength_factor;
-      const double l     = point.characteristic_length;
-      const double rho_t = point.tensile_factor;
-      const double rho_c = point.compressive_factor;
-      updated            = old;
-      SymmetricTensor<2, 3> plus, minus;
-      double                tau_t, tau_c;
+      Trial t;
+      t.phi   = point.strength_factor;
+      t.l     = point.characteristic_length;
+      t.rho_t = point.tensile_factor;
+      t.rho_c = point.compressive_factor;
+      updated = old;
       split(effective(strain - old.plastic_strain),
-            plus,
-            minus,
-            tau_t,
-            tau_c,
-            rho_t,
-            rho_c);
-      double d_t = old.kappa_t > 0 ? tension(old.kappa_t, l, phi).damage : 0.;
-      double d_c =
-        old.kappa_c > 0 ? compression(old.kappa_c, l, phi).damage : 0.;
+            t.plus,
+            t.minus,
+            t.tau_t,
+            t.tau_c,
+            t.rho_t,
+            t.rho_c);
+      t.d_t = old.kappa_t > 0 ? tension(old.kappa_t, t.l, t.phi).damage : 0.;
+      t.d_c =
+        old.kappa_c > 0 ? compression(old.kappa_c, t.l, t.phi).damage : 0.;
       // the two returns in turn: compression, then tension. The crack flow
       // (n1 n1 or s+ / tau_t) also moves the other principal values, by
       // -lambda dp each, so it can push s- back outside the compressive
@@ -638,128 +773,26 @@ namespace masonry
       // stress: a cell fully softened in compression (T_c = 0) whose crack
       // kept opening carried it, and in the walls of the study sweep such
       // cells ran away (contrib/study/results-2026-11-25)
-      const double beta = cracked_compression_factor(old.kappa_t);
-      // the factor that scales a measure tau (of the part s- or s+) onto
-      // the threshold T: T / tau, with the interaction scale_onto() (the
-      // envelope's damage, its strength f, the other part's utilisation)
-      auto scale = [&](const double tau,
-                       const double damage,
-                       const double f,
-                       const double other,
-                       const double T) {
-        return interaction ? scale_onto(tau,
-                                        (1 - damage) * tau / (phi * f),
-                                        std::min(other, 0.5),
-                                        T) :
-                             T / tau;
-      };
+      t.beta = cracked_compression_factor(old.kappa_t);
       for (unsigned int pass = 0; pass < max_passes; ++pass)
         {
-          bool cracked = false, crushed = false;
-          {
-            const double m   = interaction_share(tau_c, tau_t, d_c, d_t, phi);
-            const double tau = tau_c / ((1 - m) * beta);
-            const double p_old =
-              updated.kappa_c > 0 ?
-                compression(updated.kappa_c, l, phi).plastic :
-                0.;
-            const double e = p_old + tau / E;
-            if (e > updated.kappa_c && e > ratio * phi * f_c / E && tau_c > 0)
-              {
-                const EnvelopePoint env = compression(e, l, phi);
-                const double        T   = E * (e - env.plastic);
-                const double        s   = scale(tau_c,
-                                       env.damage,
-                                       f_c,
-                                       (1 - d_t) * tau_t / (phi * f_t),
-                                       beta * T);
-                if (radial_flow)
-                  {
-                    updated.plastic_strain += (1 - s) * compliance(minus);
-                    minus *= s;
-                    tau_c *= s;
-                  }
-                else
-                  flow(minus,
-                       1 - env.damage,
-                       d_t,
-                       phi,
-                       rho_t,
-                       rho_c,
-                       beta * T,
-                       updated,
-                       plus,
-                       tau_t,
-                       tau_c);
-                updated.kappa_c     = e;
-                updated.threshold_c = T;
-                d_c                 = env.damage;
-                crushed             = true;
-              }
-          }
+          const bool crushed = compressive_return(t, updated);
           // after a crack return the tensile state moves only with a
           // compressive one (round-off aside)
           if (pass > 0 && !crushed)
             break;
-          {
-            const double m     = interaction_share(tau_c, tau_t, d_c, d_t, phi);
-            const double tau   = tau_t / (1 - m);
-            const double p_old = updated.kappa_t > 0 ?
-                                   tension(updated.kappa_t, l, phi).plastic :
-                                   0.;
-            const double e     = p_old + tau / E;
-            if (e > updated.kappa_t && e > phi * f_t / E && tau_t > 0)
-              {
-                if (crack_flow)
-                  {
-                    const double        e_new = crack_return(e,
-                                                      updated.kappa_t,
-                                                      p_old,
-                                                      d_c,
-                                                      l,
-                                                      phi,
-                                                      rho_t,
-                                                      rho_c,
-                                                      updated,
-                                                      plus,
-                                                      minus,
-                                                      tau_t,
-                                                      tau_c);
-                    const EnvelopePoint env   = tension(e_new, l, phi);
-                    cracked                   = e_new > updated.kappa_t;
-                    updated.kappa_t           = e_new;
-                    updated.threshold_t       = E * (e_new - env.plastic);
-                    d_t                       = env.damage;
-                  }
-                else
-                  {
-                    const EnvelopePoint env = tension(e, l, phi);
-                    const double        T   = E * (e - env.plastic);
-                    const double        s   = scale(tau_t,
-                                           env.damage,
-                                           f_t,
-                                           (1 - d_c) * tau_c / (phi * f_c),
-                                           T);
-                    updated.plastic_strain += (1 - s) * compliance(plus);
-                    updated.crack_strain += (1 - s) * compliance(plus);
-                    plus *= s;
-                    updated.kappa_t     = e;
-                    updated.threshold_t = T;
-                    d_t                 = env.damage;
-                  }
-              }
-          }
-          if (!cracked)
+          if (!tensile_return(t, updated))
             break;
         }
       // viscous regularisation
       const double a =
         mu_visc > 0 && point.time_step > 0 ? mu_visc / point.time_step : 0.;
       updated.damage_t =
-        std::max((d_t + a * old.damage_t) / (1 + a), old.damage_t);
+        std::max((t.d_t + a * old.damage_t) / (1 + a), old.damage_t);
       updated.damage_c =
-        std::max((d_c + a * old.damage_c) / (1 + a), old.damage_c);
-      stress = (1 - updated.damage_t) * plus + (1 - updated.damage_c) * minus;
+        std::max((t.d_c + a * old.damage_c) / (1 + a), old.damage_c);
+      stress =
+        (1 - updated.damage_t) * t.plus + (1 - updated.damage_c) * t.minus;
     }
 
   } // namespace brickwork

@@ -247,6 +247,228 @@ namespace masonry
                  });
       }
 
+      namespace
+      {
+        /** One rank's findings of delete_cells() among its cells: pairs of
+         * a value and an active cell index. */
+        struct CellScan
+        {
+          /** The new fade factors (dimensionless), the shortenings of the
+           * cells that split now (their largest shortening so far) and the
+           * cells' largest shortenings that grew (compressive principal
+           * strains, dimensionless). */
+          std::vector<std::pair<double, unsigned int>> fades, splits,
+            shortenings;
+          /** The cells to delete (before the cap per step). */
+          std::vector<DeletedCell> candidates;
+        };
+
+        /** The cell as a candidate: what it carries (its cell-averaged
+         * stress) with it. @p e1: the largest principal value of its
+         * cell-averaged strain (dimensionless); returns the DeletedCell
+         * (its stress in Pa, fade included) and the principal values of
+         * that stress (Pa). */
+        std::pair<DeletedCell, std::array<double, 3>>
+        candidate_cell(const DoFHandler<3>::active_cell_iterator &cell,
+                       const double                               e1,
+                       const System::Vector                      &ghosted,
+                       const BrickMaterial                       &material,
+                       const PointStates                         &bricks,
+                       const Specimen                            &specimen,
+                       FEValues<3>                               &stress_values)
+        {
+          const unsigned int          c     = cell->active_cell_index();
+          const SymmetricTensor<2, 3> sigma = cell_stress(
+            cell, ghosted, material, bricks, specimen, stress_values);
+          DeletedCell d;
+          d.cell           = c;
+          d.region         = specimen.cell_region[c];
+          d.strain         = e1;
+          const auto where = cell->center();
+          for (unsigned int i = 0; i < 3; ++i)
+            d.centre[i] = where[i];
+          d.stress = {{sigma[0][0],
+                       sigma[1][1],
+                       sigma[2][2],
+                       sigma[0][1],
+                       sigma[1][2],
+                       sigma[0][2]}};
+          return std::make_pair(d, eigenvalues(sigma));
+        }
+
+        /** The fade factor (dimensionless, at most 1; <= 0: faded out) of
+         * cell @p c whose cell-averaged strain has the principal values
+         * @p e, with `Deletion fade opening' or `Deletion crushing length';
+         * @p split: whether the cell has split before. A cell that splits
+         * now is added to @p splits with its largest shortening. */
+        double
+        fade_factor(const DeletionSettings                       &settings,
+                    const Specimen                               &specimen,
+                    const unsigned int                            c,
+                    const std::array<double, 3>                  &e,
+                    const bool                                    split,
+                    std::vector<std::pair<double, unsigned int>> &splits)
+        {
+          const double opening  = settings.deletion_fade_opening;
+          const double crushing = settings.deletion_crushing_length;
+          const double e1       = e[0];
+          // the fade: linear in the opening past the threshold (the
+          // strain over the crack band of the cell) and in the
+          // shortening since the cell split, never back up
+          const double l = specimen.cell_length[c];
+          double       f = 1;
+          if (opening > 0 && e1 > settings.deletion_strain)
+            f = 1 - (e1 - settings.deletion_strain) * l / opening;
+          if (crushing > 0)
+            {
+              // the largest shortening (compressive principal strain)
+              // the cell has had: a cell that splits while unloaded
+              // crushes only past the shortening it has already
+              // carried
+              const double shortening =
+                std::max(-e[2], specimen.max_shortening[c]);
+              if (!split)
+                splits.emplace_back(shortening, c);
+              const double since =
+                split ? shortening - specimen.split_shortening[c] : 0.;
+              f = std::min(f, 1 - std::max(since, 0.) * l / crushing);
+            }
+          return f;
+        }
+
+        /** One rank's scan of its remaining cells for delete_cells(): the
+         * cells past `Deletion strain' (or split) that are to go, the fades
+         * and the shortenings (the displacement: system.u). */
+        CellScan
+        scan_cells(const DeletionSettings &settings,
+                   const BrickMaterial    &material,
+                   const PointStates      &bricks,
+                   System                 &system,
+                   const Specimen         &specimen)
+        {
+          const double opening  = settings.deletion_fade_opening;
+          const double crushing = settings.deletion_crushing_length;
+          // maximum principal strain of the cell-averaged strain
+          system.ghosted = system.u;
+          QGauss<3>                          quadrature(2);
+          FEValues<3>                        fe_values(system.fe,
+                                quadrature,
+                                update_gradients | update_JxW_values);
+          FEValues<3>                        stress_values(system.fe,
+                                    quadrature,
+                                    update_gradients | update_JxW_values);
+          std::vector<SymmetricTensor<2, 3>> eps(8);
+          CellScan                           scan;
+          for (const auto &cell : system.dof_handler.active_cell_iterators())
+            if (cell->is_locally_owned() &&
+                !specimen.deleted[cell->active_cell_index()])
+              {
+                const auto e = eigenvalues(
+                  mean_strain(cell, system.ghosted, fe_values, eps));
+                const double       e1 = e[0];
+                const unsigned int c  = cell->active_cell_index();
+                if (crushing > 0 && -e[2] > specimen.max_shortening[c])
+                  scan.shortenings.emplace_back(-e[2], c);
+                const bool split =
+                  crushing > 0 && specimen.split_shortening[c] >= 0;
+                if (e1 <= settings.deletion_strain && !split)
+                  continue;
+                // a cell that still carries more than `Deletion stress'
+                // stays (its stress: the largest absolute principal value
+                // of the cell average)
+                auto consider = [&]() {
+                  const auto [d, s] = candidate_cell(cell,
+                                                     e1,
+                                                     system.ghosted,
+                                                     material,
+                                                     bricks,
+                                                     specimen,
+                                                     stress_values);
+                  if (settings.deletion_stress <= 0 ||
+                      std::max(std::abs(s[0]), std::abs(s[2])) <=
+                        settings.deletion_stress)
+                    {
+                      scan.candidates.push_back(d);
+                      return true;
+                    }
+                  return false;
+                };
+                if (opening <= 0 && crushing <= 0)
+                  {
+                    consider();
+                    continue;
+                  }
+                const double f =
+                  fade_factor(settings, specimen, c, e, split, scan.splits);
+                if (f <= 0 && consider())
+                  continue;
+                // the fade never goes back up
+                if (f < specimen.fade[c])
+                  scan.fades.emplace_back(f <= 0 ? fade_floor : f, c);
+              }
+          return scan;
+        }
+
+        /** Records the fades and shortenings that the ranks' @p scan found
+         * in @p specimen on every rank; @p faded counts the faded cells. */
+        void
+        share_fades(const CellScan &scan,
+                    const System   &system,
+                    Specimen       &specimen,
+                    unsigned int   &faded)
+        {
+          for (const auto &part :
+               Utilities::MPI::all_gather(system.comm, scan.shortenings))
+            for (const auto &[shortening, c] : part)
+              specimen.max_shortening[c] = shortening;
+          for (const auto &part :
+               Utilities::MPI::all_gather(system.comm, scan.splits))
+            for (const auto &[shortening, c] : part)
+              specimen.split_shortening[c] = std::max(shortening, 0.);
+          for (const auto &part :
+               Utilities::MPI::all_gather(system.comm, scan.fades))
+            for (const auto &[f, c] : part)
+              {
+                specimen.fade[c] = f;
+                ++faded;
+              }
+        }
+
+        /** The cells to delete, the same on every rank: the ranks'
+         * @p candidates, largest strains first, at most `Maximum deletions
+         * per step' (those over the cap wait at the fade floor, counted in
+         * @p faded). */
+        std::vector<DeletedCell>
+        choose_cells(const std::vector<DeletedCell> &candidates,
+                     const DeletionSettings         &settings,
+                     const System                   &system,
+                     Specimen                       &specimen,
+                     unsigned int                   &faded)
+        {
+          // the same decision on every rank: largest strains first, capped
+          std::vector<DeletedCell> all;
+          for (const auto &part :
+               Utilities::MPI::all_gather(system.comm, candidates))
+            all.insert(all.end(), part.begin(), part.end());
+          std::sort(all.begin(), all.end(), [](const auto &a, const auto &b) {
+            return a.strain > b.strain ||
+                   (a.strain == b.strain && a.cell < b.cell);
+          });
+          if (all.size() > settings.max_deletions)
+            {
+              // faded out but over the cap: nearly nothing until deleted
+              for (unsigned int k = settings.max_deletions; k < all.size(); ++k)
+                if (specimen.fade[all[k].cell] > fade_floor)
+                  {
+                    specimen.fade[all[k].cell] = fade_floor;
+                    ++faded;
+                  }
+              all.resize(settings.max_deletions);
+            }
+          return all;
+        }
+      } // namespace
+
       unsigned int
       delete_cells(const DeletionSettings &settings,
                    const Joints           &joints,
@@ -262,136 +484,11 @@ namespace masonry
           return 0;
         // the same numbers on one assembly thread as on many (OneThread)
         const OneThread one_thread;
-        const double    opening  = settings.deletion_fade_opening;
-        const double    crushing = settings.deletion_crushing_length;
-        // maximum principal strain of the cell-averaged strain
-        system.ghosted = system.u;
-        QGauss<3>                                    quadrature(2);
-        FEValues<3>                                  fe_values(system.fe,
-                              quadrature,
-                              update_gradients | update_JxW_values);
-        FEValues<3>                                  stress_values(system.fe,
-                                  quadrature,
-                                  update_gradients | update_JxW_values);
-        std::vector<SymmetricTensor<2, 3>>           eps(8);
-        std::vector<std::pair<double, unsigned int>> fades, splits, shortenings;
-        std::vector<DeletedCell>                     candidates;
-        for (const auto &cell : system.dof_handler.active_cell_iterators())
-          if (cell->is_locally_owned() &&
-              !specimen.deleted[cell->active_cell_index()])
-            {
-              const auto e =
-                eigenvalues(mean_strain(cell, system.ghosted, fe_values, eps));
-              const double       e1 = e[0];
-              const unsigned int c  = cell->active_cell_index();
-              if (crushing > 0 && -e[2] > specimen.max_shortening[c])
-                shortenings.emplace_back(-e[2], c);
-              const bool split =
-                crushing > 0 && specimen.split_shortening[c] >= 0;
-              if (e1 <= settings.deletion_strain && !split)
-                continue;
-              // the cell as a candidate: what it carries (its cell-averaged
-              // stress) with it
-              auto candidate = [&]() {
-                const SymmetricTensor<2, 3> sigma = cell_stress(cell,
-                                                                system.ghosted,
-                                                                material,
-                                                                bricks,
-                                                                specimen,
-                                                                stress_values);
-                DeletedCell                 d;
-                d.cell           = c;
-                d.region         = specimen.cell_region[c];
-                d.strain         = e1;
-                const auto where = cell->center();
-                for (unsigned int i = 0; i < 3; ++i)
-                  d.centre[i] = where[i];
-                d.stress = {{sigma[0][0],
-                             sigma[1][1],
-                             sigma[2][2],
-                             sigma[0][1],
-                             sigma[1][2],
-                             sigma[0][2]}};
-                return std::make_pair(d, eigenvalues(sigma));
-              };
-              // a cell that still carries more than `Deletion stress'
-              // stays (its stress: the largest absolute principal value
-              // of the cell average)
-              auto consider = [&]() {
-                const auto [d, s] = candidate();
-                if (settings.deletion_stress <= 0 ||
-                    std::max(std::abs(s[0]), std::abs(s[2])) <=
-                      settings.deletion_stress)
-                  {
-                    candidates.push_back(d);
-                    return true;
-                  }
-                return false;
-              };
-              if (opening <= 0 && crushing <= 0)
-                {
-                  consider();
-                  continue;
-                }
-              // the fade: linear in the opening past the threshold (the
-              // strain over the crack band of the cell) and in the
-              // shortening since the cell split, never back up
-              const double l = specimen.cell_length[c];
-              double       f = 1;
-              if (opening > 0 && e1 > settings.deletion_strain)
-                f = 1 - (e1 - settings.deletion_strain) * l / opening;
-              if (crushing > 0)
-                {
-                  // the largest shortening (compressive principal strain)
-                  // the cell has had: a cell that splits while unloaded
-                  // crushes only past the shortening it has already
-                  // carried
-                  const double shortening =
-                    std::max(-e[2], specimen.max_shortening[c]);
-                  if (!split)
-                    splits.emplace_back(shortening, c);
-                  const double since =
-                    split ? shortening - specimen.split_shortening[c] : 0.;
-                  f = std::min(f, 1 - std::max(since, 0.) * l / crushing);
-                }
-              if (f <= 0 && consider())
-                continue;
-              if (f < specimen.fade[c])
-                fades.emplace_back(f <= 0 ? fade_floor : f, c);
-            }
-        for (const auto &part :
-             Utilities::MPI::all_gather(system.comm, shortenings))
-          for (const auto &[shortening, c] : part)
-            specimen.max_shortening[c] = shortening;
-        for (const auto &part : Utilities::MPI::all_gather(system.comm, splits))
-          for (const auto &[shortening, c] : part)
-            specimen.split_shortening[c] = std::max(shortening, 0.);
-        for (const auto &part : Utilities::MPI::all_gather(system.comm, fades))
-          for (const auto &[f, c] : part)
-            {
-              specimen.fade[c] = f;
-              ++faded;
-            }
-        // the same decision on every rank: largest strains first, capped
-        std::vector<DeletedCell> all;
-        for (const auto &part :
-             Utilities::MPI::all_gather(system.comm, candidates))
-          all.insert(all.end(), part.begin(), part.end());
-        std::sort(all.begin(), all.end(), [](const auto &a, const auto &b) {
-          return a.strain > b.strain ||
-                 (a.strain == b.strain && a.cell < b.cell);
-        });
-        if (all.size() > settings.max_deletions)
-          {
-            // faded out but over the cap: nearly nothing until deleted
-            for (unsigned int k = settings.max_deletions; k < all.size(); ++k)
-              if (specimen.fade[all[k].cell] > fade_floor)
-                {
-                  specimen.fade[all[k].cell] = fade_floor;
-                  ++faded;
-                }
-            all.resize(settings.max_deletions);
-          }
+        const CellScan  scan =
+          scan_cells(settings, material, bricks, system, specimen);
+        share_fades(scan, system, specimen, faded);
+        std::vector<DeletedCell> all =
+          choose_cells(scan.candidates, settings, system, specimen, faded);
         if (all.empty())
           return 0;
         for (auto &d : all)

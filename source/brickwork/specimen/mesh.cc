@@ -19,161 +19,217 @@ namespace masonry
   {
     using namespace dealii;
 
+    namespace
+    {
+      /** Declare the sizes of a unit without mortar and of the joints, m. */
+      void
+      declare_unit_entries(dealii::ParameterHandler &prm)
+      {
+        using dealii::Patterns::Double;
+        prm.declare_entry("Brick length",
+                          "0.215",
+                          Double(0),
+                          "Length of a brick without mortar, m (>= 1e-6).");
+        prm.declare_entry("Brick width",
+                          "0.1025",
+                          Double(0),
+                          "Width of a brick without mortar, m (>= 1e-6).");
+        prm.declare_entry("Brick height",
+                          "0.065",
+                          Double(0),
+                          "Height of a brick without mortar, m (>= 1e-6).");
+        prm.declare_entry("Joint thickness",
+                          "0.010",
+                          Double(0),
+                          "Thickness of the mortar joints, m (>= 0): each "
+                          "enlarged brick is the brick plus half a joint on "
+                          "every side. `Model = simplified': the joints "
+                          "become zero-thickness interfaces; `detailed': the "
+                          "mortar is meshed as one layer of hexahedra of "
+                          "this thickness (>= 1e-6 then).");
+      }
+
+      /** Declare the model of the mortar (`Model') and the unfilled strips
+       * of the bed joints along the collar joints of the detailed model
+       * (`Collar bed gap', m). */
+      void
+      declare_model_entries(dealii::ParameterHandler &prm)
+      {
+        using dealii::Patterns::Double;
+        using dealii::Patterns::Selection;
+        prm.declare_entry(
+          "Model",
+          "simplified",
+          Selection("simplified|detailed"),
+          "`simplified': enlarged bricks (brick plus half a joint all "
+          "round) joined by zero-thickness interfaces that stand for the "
+          "mortar (`Interface law', whose penalties then represent the "
+          "mortar's stiffness, e.g. Lourenco-Rots from E_b, E_m, nu and "
+          "the joint thickness). `detailed': the units at their actual "
+          "size (`Brick length/width/height'), the mortar of bed and head "
+          "joints (and collar joints) meshed as one layer of hexahedra "
+          "`Joint thickness' thick with `subsection Mortar material' (any "
+          "brick material), and the zero-thickness interfaces of the "
+          "`Interface law' between units and mortar as the bond, whose "
+          "penalties should then be stiff contact penalties (the mortar's "
+          "compliance is in its cells); the wallette is one joint "
+          "thickness shorter, thinner and lower than the enlarged one "
+          "(outer faces are unit faces). Cells along the length, width "
+          "and height of a unit are about its size / the enlarged mesh "
+          "spacing; mortar layers are one cell thick. Not with `Mesh "
+          "distortion'.");
+        prm.declare_entry(
+          "Collar bed gap",
+          "0",
+          Double(),
+          "Width of the unfilled strip of every bed joint on each side of "
+          "every collar joint, m (`Model = detailed' only, >= 0; the strips "
+          "must stay apart and off the faces, e.g. g < 0.1025 m in a double "
+          "and g < 0.05125 m in a triple english wall of 215 mm units): the "
+          "bed-joint mortar in the plane of a collar joint, widened by this "
+          "on both sides, is a void (no cells; the unit faces above and "
+          "below it are free), as where the mortar beds of the wythes are "
+          "spread separately and do not meet. A workmanship input, as a "
+          "dismantled specimen shows it; no effect on a wall without collar "
+          "joints. The plan area of the voids (`bed_void_area', m^2, summed "
+          "over the bed joints) is in log.txt and summary.json.");
+      }
+
+      /** Declare the size of the wallette in units (courses, length) and
+       * the hexahedra per enlarged unit (the mesh spacing). */
+      void
+      declare_size_entries(dealii::ParameterHandler &prm)
+      {
+        using dealii::Patterns::Integer;
+        prm.declare_entry("Courses",
+                          "5",
+                          Integer(1, 1000),
+                          "Number of courses (rows of bricks) of the "
+                          "wallette.");
+        prm.declare_entry("Length in bricks",
+                          "2",
+                          Integer(1, 1000),
+                          "Length of the wallette in (enlarged) brick "
+                          "lengths.");
+        prm.declare_entry("Elements along the length",
+                          "4",
+                          Integer(1, 64),
+                          "Hexahedra along the length of an enlarged "
+                          "stretcher; the mesh spacing (enlarged length / "
+                          "this number) is used for every brick, so that the "
+                          "meshes of neighbouring bricks match across the "
+                          "joints (even for the stretcher bond, a multiple "
+                          "of 4 for the english bond).");
+        prm.declare_entry("Elements along the width",
+                          "2",
+                          Integer(1, 64),
+                          "Hexahedra across the width of an enlarged "
+                          "stretcher (mesh spacing across the wall).");
+        prm.declare_entry("Elements along the height",
+                          "2",
+                          Integer(1, 64),
+                          "Hexahedra over the height of an enlarged brick.");
+      }
+
+      /** Declare how the joints are modelled (interfaces or bonded) and the
+       * splitting interfaces through the units. */
+      void
+      declare_joint_entries(dealii::ParameterHandler &prm)
+      {
+        using dealii::Patterns::Bool;
+        using dealii::Patterns::Selection;
+        prm.declare_entry(
+          "Joints",
+          "interfaces",
+          Selection("interfaces|bonded"),
+          "`interfaces': every joint is a zero-thickness interface of the "
+          "`Interface law'; `bonded': the bricks share the vertices of "
+          "coincident faces, so the wallette is one continuum without "
+          "joints (a perfectly bonded reference).");
+        prm.declare_entry(
+          "Splitting interfaces",
+          "false",
+          Bool(),
+          "Potential vertical splitting cracks: each unit is meshed as two "
+          "halves joined by a zero-thickness interface through its middle, "
+          "normal to its longer horizontal side (in line with the head "
+          "joints of the next course for a stretcher; units whose half is "
+          "not a whole number of elements, such as closers, stay whole). "
+          "The interface follows the composite law with the unit's tensile "
+          "strength and fracture energy as its tension cut-off, Coulomb "
+          "friction through the unit's uniaxial strengths (c = sqrt(f_c "
+          "f_t) / 2, tan(phi) = (f_c - f_t) / (2 sqrt(f_c f_t))), G_II = 10 "
+          "G_f and no cap (10 f_c); the values used are printed in log.txt "
+          "and summary.json (derived_values / splitting_interfaces). Needs "
+          "`Joints = interfaces'.");
+      }
+
+      /** Declare the distortion of the hexahedra (patch tests) and the
+       * integration points of the interface elements. */
+      void
+      declare_discretisation_entries(dealii::ParameterHandler &prm)
+      {
+        using dealii::Patterns::Double;
+        using dealii::Patterns::Selection;
+        prm.declare_entry(
+          "Mesh distortion",
+          "0",
+          Double(0, 0.2),
+          "Amplitude of a smooth distortion of the hexahedra, as a "
+          "fraction of the mesh spacing in each direction (dimensionless; "
+          "0: the regular mesh). With `Joints = interfaces' the vertices "
+          "inside each brick move by a bubble that vanishes on the brick's "
+          "faces, so joint faces and the wallette's faces stay unchanged; "
+          "with `Joints = bonded' one smooth map moves all vertices and "
+          "keeps each face of the wallette in its plane. For patch tests "
+          "(uniform compression has the same exact solution).");
+        prm.declare_entry("Interface integration",
+                          "lobatto",
+                          Selection("lobatto|gauss"),
+                          "Integration points of the interface elements: "
+                          "`lobatto' (2 x 2 points at the nodes, avoids "
+                          "traction oscillations at high penalty) or "
+                          "`gauss' (2 x 2 Gauss points).");
+      }
+
+      /** Declare the filled fractions of the head and collar joints
+       * (workmanship of the detailed model, dimensionless). */
+      void
+      declare_fill_entries(dealii::ParameterHandler &prm)
+      {
+        using dealii::Patterns::Double;
+        for (const char *joint : {"Head", "Collar"})
+          prm.declare_entry(
+            std::string(joint) + " joint fill",
+            "1",
+            Double(),
+            std::string("Filled fraction of the height of every ") +
+              (joint[0] == 'H' ?
+                 "head joint (perpend)" :
+                 "collar joint (the vertical joint between the wythes of "
+                 "the english bond; where a head joint meets it, the "
+                 "column counts as collar joint)") +
+              ", dimensionless, 0 to 1 (`Model = detailed' only): the "
+              "joint is mortar from the bed joint below up to this "
+              "fraction of the unit height, the rest, up to the bed joint "
+              "above, is a void (no cells; the unit faces there are free). "
+              "A workmanship input, as a survey or a dismantled specimen "
+              "shows it. The areas of the joints and of their voids and "
+              "the fill meshed (the grid line lies at the fraction "
+              "exactly) are printed in log.txt and summary.json; 1: full "
+              "joints.");
+      }
+    } // namespace
+
     void
     MeshSettings::declare_parameters(dealii::ParameterHandler &prm)
     {
-      using dealii::Patterns::Bool;
-      using dealii::Patterns::Double;
-      using dealii::Patterns::Integer;
-      using dealii::Patterns::Selection;
-      prm.declare_entry("Brick length",
-                        "0.215",
-                        Double(0),
-                        "Length of a brick without mortar, m (>= 1e-6).");
-      prm.declare_entry("Brick width",
-                        "0.1025",
-                        Double(0),
-                        "Width of a brick without mortar, m (>= 1e-6).");
-      prm.declare_entry("Brick height",
-                        "0.065",
-                        Double(0),
-                        "Height of a brick without mortar, m (>= 1e-6).");
-      prm.declare_entry("Joint thickness",
-                        "0.010",
-                        Double(0),
-                        "Thickness of the mortar joints, m (>= 0): each "
-                        "enlarged brick is the brick plus half a joint on "
-                        "every side. `Model = simplified': the joints "
-                        "become zero-thickness interfaces; `detailed': the "
-                        "mortar is meshed as one layer of hexahedra of "
-                        "this thickness (>= 1e-6 then).");
-      prm.declare_entry(
-        "Model",
-        "simplified",
-        Selection("simplified|detailed"),
-        "`simplified': enlarged bricks (brick plus half a joint all "
-        "round) joined by zero-thickness interfaces that stand for the "
-        "mortar (`Interface law', whose penalties then represent the "
-        "mortar's stiffness, e.g. Lourenco-Rots from E_b, E_m, nu and "
-        "the joint thickness). `detailed': the units at their actual "
-        "size (`Brick length/width/height'), the mortar of bed and head "
-        "joints (and collar joints) meshed as one layer of hexahedra "
-        "`Joint thickness' thick with `subsection Mortar material' (any "
-        "brick material), and the zero-thickness interfaces of the "
-        "`Interface law' between units and mortar as the bond, whose "
-        "penalties should then be stiff contact penalties (the mortar's "
-        "compliance is in its cells); the wallette is one joint "
-        "thickness shorter, thinner and lower than the enlarged one "
-        "(outer faces are unit faces). Cells along the length, width "
-        "and height of a unit are about its size / the enlarged mesh "
-        "spacing; mortar layers are one cell thick. Not with `Mesh "
-        "distortion'.");
-      prm.declare_entry(
-        "Collar bed gap",
-        "0",
-        Double(),
-        "Width of the unfilled strip of every bed joint on each side of "
-        "every collar joint, m (`Model = detailed' only, >= 0; the strips "
-        "must stay apart and off the faces, e.g. g < 0.1025 m in a double "
-        "and g < 0.05125 m in a triple english wall of 215 mm units): the "
-        "bed-joint mortar in the plane of a collar joint, widened by this "
-        "on both sides, is a void (no cells; the unit faces above and "
-        "below it are free), as where the mortar beds of the wythes are "
-        "spread separately and do not meet. A workmanship input, as a "
-        "dismantled specimen shows it; no effect on a wall without collar "
-        "joints. The plan area of the voids (`bed_void_area', m^2, summed "
-        "over the bed joints) is in log.txt and summary.json.");
-      prm.declare_entry("Courses",
-                        "5",
-                        Integer(1, 1000),
-                        "Number of courses (rows of bricks) of the "
-                        "wallette.");
-      prm.declare_entry("Length in bricks",
-                        "2",
-                        Integer(1, 1000),
-                        "Length of the wallette in (enlarged) brick "
-                        "lengths.");
-      prm.declare_entry("Elements along the length",
-                        "4",
-                        Integer(1, 64),
-                        "Hexahedra along the length of an enlarged "
-                        "stretcher; the mesh spacing (enlarged length / "
-                        "this number) is used for every brick, so that the "
-                        "meshes of neighbouring bricks match across the "
-                        "joints (even for the stretcher bond, a multiple "
-                        "of 4 for the english bond).");
-      prm.declare_entry("Elements along the width",
-                        "2",
-                        Integer(1, 64),
-                        "Hexahedra across the width of an enlarged "
-                        "stretcher (mesh spacing across the wall).");
-      prm.declare_entry("Elements along the height",
-                        "2",
-                        Integer(1, 64),
-                        "Hexahedra over the height of an enlarged brick.");
-      prm.declare_entry(
-        "Joints",
-        "interfaces",
-        Selection("interfaces|bonded"),
-        "`interfaces': every joint is a zero-thickness interface of the "
-        "`Interface law'; `bonded': the bricks share the vertices of "
-        "coincident faces, so the wallette is one continuum without "
-        "joints (a perfectly bonded reference).");
-      prm.declare_entry(
-        "Splitting interfaces",
-        "false",
-        Bool(),
-        "Potential vertical splitting cracks: each unit is meshed as two "
-        "halves joined by a zero-thickness interface through its middle, "
-        "normal to its longer horizontal side (in line with the head "
-        "joints of the next course for a stretcher; units whose half is "
-        "not a whole number of elements, such as closers, stay whole). "
-        "The interface follows the composite law with the unit's tensile "
-        "strength and fracture energy as its tension cut-off, Coulomb "
-        "friction through the unit's uniaxial strengths (c = sqrt(f_c "
-        "f_t) / 2, tan(phi) = (f_c - f_t) / (2 sqrt(f_c f_t))), G_II = 10 "
-        "G_f and no cap (10 f_c); the values used are printed in log.txt "
-        "and summary.json (derived_values / splitting_interfaces). Needs "
-        "`Joints = interfaces'.");
-      prm.declare_entry(
-        "Mesh distortion",
-        "0",
-        Double(0, 0.2),
-        "Amplitude of a smooth distortion of the hexahedra, as a "
-        "fraction of the mesh spacing in each direction (dimensionless; "
-        "0: the regular mesh). With `Joints = interfaces' the vertices "
-        "inside each brick move by a bubble that vanishes on the brick's "
-        "faces, so joint faces and the wallette's faces stay unchanged; "
-        "with `Joints = bonded' one smooth map moves all vertices and "
-        "keeps each face of the wallette in its plane. For patch tests "
-        "(uniform compression has the same exact solution).");
-      prm.declare_entry("Interface integration",
-                        "lobatto",
-                        Selection("lobatto|gauss"),
-                        "Integration points of the interface elements: "
-                        "`lobatto' (2 x 2 points at the nodes, avoids "
-                        "traction oscillations at high penalty) or "
-                        "`gauss' (2 x 2 Gauss points).");
-      for (const char *joint : {"Head", "Collar"})
-        prm.declare_entry(
-          std::string(joint) + " joint fill",
-          "1",
-          Double(),
-          std::string("Filled fraction of the height of every ") +
-            (joint[0] == 'H' ?
-               "head joint (perpend)" :
-               "collar joint (the vertical joint between the wythes of "
-               "the english bond; where a head joint meets it, the "
-               "column counts as collar joint)") +
-            ", dimensionless, 0 to 1 (`Model = detailed' only): the "
-            "joint is mortar from the bed joint below up to this "
-            "fraction of the unit height, the rest, up to the bed joint "
-            "above, is a void (no cells; the unit faces there are free). "
-            "A workmanship input, as a survey or a dismantled specimen "
-            "shows it. The areas of the joints and of their voids and "
-            "the fill meshed (the grid line lies at the fraction "
-            "exactly) are printed in log.txt and summary.json; 1: full "
-            "joints.");
+      declare_unit_entries(prm);
+      declare_model_entries(prm);
+      declare_size_entries(prm);
+      declare_joint_entries(prm);
+      declare_discretisation_entries(prm);
+      declare_fill_entries(prm);
     }
 
     void
@@ -342,6 +398,223 @@ namespace masonry
         }
       } // namespace
 
+      namespace
+      {
+        /** A unit of the detailed model or, split, one of its halves: its
+         * box (m) and the index of its brick. */
+        struct Piece
+        {
+          std::array<double, 3> lower, upper;
+          unsigned int          brick;
+        };
+
+        /** The length, thickness and height of the detailed wallette (the
+         * outer faces of its units: each of @p boxes less one joint
+         * @p hm), m, into @p g. */
+        void
+        detailed_extent(const std::vector<Box> &boxes,
+                        const double            hm,
+                        Geometry               &g)
+        {
+          for (const Box &box : boxes)
+            for (unsigned int d = 0; d < 3; ++d)
+              {
+                const double top    = box.upper[d] - hm;
+                (d == 0 ? g.length :
+                 d == 1 ? g.thickness :
+                          g.height) = std::max(d == 0 ? g.length :
+                                               d == 1 ? g.thickness :
+                                                        g.height,
+                                               top);
+              }
+        }
+
+        /** The units of @p boxes (each box less one joint, h_m, at its
+         * upper end in every direction) and, with `Splitting interfaces',
+         * their halves; the coordinates of their faces and splitting
+         * planes (m) are added to @p lines, and each split unit counted
+         * in g.n_split_units (@p h: the mesh spacing, m). */
+        std::vector<Piece>
+        unit_pieces(const std::vector<Box>      &boxes,
+                    const MeshSettings          &settings,
+                    const std::array<double, 3> &h,
+                    std::vector<double> (&lines)[3],
+                    Geometry &g)
+        {
+          const double       hm = settings.mortar_thickness;
+          std::vector<Piece> pieces;
+          for (unsigned int b = 0; b < boxes.size(); ++b)
+            {
+              Piece unit{boxes[b].lower, boxes[b].upper, b};
+              for (unsigned int d = 0; d < 3; ++d)
+                {
+                  unit.upper[d] -= hm;
+                  lines[d].push_back(unit.lower[d]);
+                  lines[d].push_back(unit.upper[d]);
+                }
+              const unsigned int d    = split_direction(boxes[b]);
+              const double       size = unit.upper[d] - unit.lower[d];
+              if (settings.split_units && !settings.bonded &&
+                  std::round(size / h[d]) >= 2)
+                {
+                  const double middle = 0.5 * (unit.lower[d] + unit.upper[d]);
+                  Piece        first = unit, second = unit;
+                  first.upper[d] = second.lower[d] = middle;
+                  lines[d].push_back(middle);
+                  pieces.push_back(first);
+                  pieces.push_back(second);
+                  ++g.n_split_units;
+                }
+              else
+                pieces.push_back(unit);
+            }
+          return pieces;
+        }
+
+        /** The unfilled strips (y from, to; m) of the bed joints along the
+         * collar joints between @p pieces, with `Collar bed gap' (none
+         * without); their ends are added to the grid lines @p lines_y.
+         * Throws if a wythe is left without bed-joint mortar (@p thickness:
+         * the wall's, m; @p tol: the tolerance of coordinates, m). */
+        std::vector<std::pair<double, double>>
+        collar_bed_gaps(const std::vector<Piece> &pieces,
+                        const MeshSettings       &settings,
+                        const double              thickness,
+                        const double              tol,
+                        std::vector<double>      &lines_y)
+        {
+          const double hm = settings.mortar_thickness;
+          // the collar planes: a mortar layer h_m thick in y between units on
+          // both sides (one wythe's unit ends at y = a, the next one's starts
+          // at a + h_m); with a bed gap g the bed joints are void over
+          // [a - g, a + h_m + g], and grid lines lie at its ends
+          std::vector<std::pair<double, double>> bed_gaps;
+          if (settings.collar_bed_gap > 0)
+            {
+              std::vector<double> ends;
+              for (const Piece &p : pieces)
+                for (const Piece &q : pieces)
+                  if (std::abs(q.lower[1] - p.upper[1] - hm) < tol &&
+                      std::none_of(ends.begin(), ends.end(), [&](double e) {
+                        return std::abs(e - p.upper[1]) < tol;
+                      }))
+                    ends.push_back(p.upper[1]);
+              for (const double a : ends)
+                {
+                  bed_gaps.emplace_back(
+                    std::max(0., a - settings.collar_bed_gap),
+                    std::min(thickness, a + hm + settings.collar_bed_gap));
+                  lines_y.push_back(bed_gaps.back().first);
+                  lines_y.push_back(bed_gaps.back().second);
+                }
+              // every wythe keeps a bed: the strips stay apart and off the
+              // faces (otherwise a wythe's units rest on nothing)
+              std::sort(bed_gaps.begin(), bed_gaps.end());
+              double left  = 0;
+              bool   apart = true;
+              for (const auto &gap : bed_gaps)
+                {
+                  apart = apart && gap.first - left >= tol;
+                  left  = gap.second;
+                }
+              if (!apart || thickness - left < tol)
+                {
+                  std::ostringstream m;
+                  m << settings.collar_bed_gap
+                    << " m leaves a wythe without bed-joint mortar: the "
+                       "unfilled strips (the collar joint's "
+                    << hm
+                    << " m and the gap on each side) meet each other or a "
+                       "face of the "
+                    << thickness << " m thick wall";
+                  AssertThrow(false, ExcParameter("Collar bed gap", m.str()));
+                }
+            }
+          return bed_gaps;
+        }
+
+        /** The grid coordinates (m) in one direction: the distinct @p lines
+         * (within @p tol), which must run from 0 to @p extent (m), each
+         * interval divided at about the mesh spacing @p h (m). */
+        std::vector<double>
+        grid_from_lines(std::vector<double> l,
+                        const double        extent,
+                        const double        h,
+                        const double        tol)
+        {
+          std::vector<double> grid;
+          std::sort(l.begin(), l.end());
+          std::vector<double> unique;
+          for (const double x : l)
+            if (unique.empty() || x - unique.back() > tol)
+              unique.push_back(x);
+          AssertThrow(unique.front() > -tol &&
+                        std::abs(unique.back() - extent) < tol,
+                      ExcInternalError());
+          for (unsigned int i = 0; i + 1 < unique.size(); ++i)
+            {
+              const double       a = unique[i], b = unique[i + 1];
+              const unsigned int n = std::max(1., std::round((b - a) / h));
+              for (unsigned int k = 0; k < n; ++k)
+                grid.push_back(a + (b - a) * k / n);
+            }
+          grid.push_back(unique.back());
+          return grid;
+        }
+
+        /** The owner of each cell of the @p n[0] x @p n[1] x @p n[2]
+         * cells of @p grid (index i + n[0] (j + n[1] k)): the index of the
+         * piece of @p pieces that covers it, else pieces.size() (the
+         * mortar); @p tol: the tolerance of coordinates, m. */
+        std::vector<unsigned int>
+        cell_owners(const std::vector<Piece> &pieces,
+                    const std::vector<double> (&grid)[3],
+                    const unsigned int (&n)[3],
+                    const double tol)
+        {
+          const unsigned int        mortar = pieces.size();
+          std::vector<unsigned int> owner(n[0] * n[1] * n[2], mortar);
+          for (unsigned int p = 0; p < pieces.size(); ++p)
+            {
+              unsigned int from[3], to[3];
+              for (unsigned int d = 0; d < 3; ++d)
+                {
+                  from[d] = std::lower_bound(grid[d].begin(),
+                                             grid[d].end(),
+                                             pieces[p].lower[d] - tol) -
+                            grid[d].begin();
+                  to[d] = std::lower_bound(grid[d].begin(),
+                                           grid[d].end(),
+                                           pieces[p].upper[d] - tol) -
+                          grid[d].begin();
+                }
+              for (unsigned int k = from[2]; k < to[2]; ++k)
+                for (unsigned int j = from[1]; j < to[1]; ++j)
+                  for (unsigned int i = from[0]; i < to[0]; ++i)
+                    owner[i + n[0] * (j + n[1] * k)] = p;
+            }
+          return owner;
+        }
+
+        /** The height ranges (z from, to; m) of the courses of @p pieces,
+         * sorted, one per course (bottoms within @p tol). */
+        std::vector<std::pair<double, double>>
+        course_ranges(const std::vector<Piece> &pieces, const double tol)
+        {
+          std::vector<std::pair<double, double>> courses;
+          for (const Piece &p : pieces)
+            courses.emplace_back(p.lower[2], p.upper[2]);
+          std::sort(courses.begin(), courses.end());
+          courses.erase(std::unique(courses.begin(),
+                                    courses.end(),
+                                    [&](const auto &a, const auto &b) {
+                                      return std::abs(a.first - b.first) < tol;
+                                    }),
+                        courses.end());
+          return courses;
+        }
+      } // namespace
+
       Geometry
       make_detailed_mesh(const std::vector<Box> &boxes,
                          const MeshSettings     &settings,
@@ -351,52 +624,13 @@ namespace masonry
         const auto   h  = mesh_spacing(settings);
         Geometry     g;
         check_units(boxes, settings);
-        for (const Box &box : boxes)
-          for (unsigned int d = 0; d < 3; ++d)
-            {
-              const double top    = box.upper[d] - hm;
-              (d == 0 ? g.length :
-               d == 1 ? g.thickness :
-                        g.height) = std::max(d == 0 ? g.length :
-                                             d == 1 ? g.thickness :
-                                                      g.height,
-                                             top);
-            }
+        detailed_extent(boxes, hm, g);
         const double extent[3] = {g.length, g.thickness, g.height};
         const double tol       = 1e-9 * std::max({g.length, g.height});
         // the units and, split, their halves
-        struct Piece
-        {
-          std::array<double, 3> lower, upper;
-          unsigned int          brick;
-        };
-        std::vector<Piece>  pieces;
-        std::vector<double> lines[3];
-        for (unsigned int b = 0; b < boxes.size(); ++b)
-          {
-            Piece unit{boxes[b].lower, boxes[b].upper, b};
-            for (unsigned int d = 0; d < 3; ++d)
-              {
-                unit.upper[d] -= hm;
-                lines[d].push_back(unit.lower[d]);
-                lines[d].push_back(unit.upper[d]);
-              }
-            const unsigned int d    = split_direction(boxes[b]);
-            const double       size = unit.upper[d] - unit.lower[d];
-            if (settings.split_units && !settings.bonded &&
-                std::round(size / h[d]) >= 2)
-              {
-                const double middle = 0.5 * (unit.lower[d] + unit.upper[d]);
-                Piece        first = unit, second = unit;
-                first.upper[d] = second.lower[d] = middle;
-                lines[d].push_back(middle);
-                pieces.push_back(first);
-                pieces.push_back(second);
-                ++g.n_split_units;
-              }
-            else
-              pieces.push_back(unit);
-          }
+        std::vector<double>      lines[3];
+        const std::vector<Piece> pieces =
+          unit_pieces(boxes, settings, h, lines, g);
         // partly filled head and collar joints: a grid line at the top of
         // the filled part of every course
         const double fills[2] = {settings.head_joint_fill,
@@ -405,112 +639,25 @@ namespace masonry
           for (const double f : fills)
             if (f > 0 && f < 1)
               lines[2].push_back(p.lower[2] + f * (p.upper[2] - p.lower[2]));
-        // the collar planes: a mortar layer h_m thick in y between units on
-        // both sides (one wythe's unit ends at y = a, the next one's starts
-        // at a + h_m); with a bed gap g the bed joints are void over
-        // [a - g, a + h_m + g], and grid lines lie at its ends
-        std::vector<std::pair<double, double>> bed_gaps;
-        if (settings.collar_bed_gap > 0)
-          {
-            std::vector<double> ends;
-            for (const Piece &p : pieces)
-              for (const Piece &q : pieces)
-                if (std::abs(q.lower[1] - p.upper[1] - hm) < tol &&
-                    std::none_of(ends.begin(), ends.end(), [&](double e) {
-                      return std::abs(e - p.upper[1]) < tol;
-                    }))
-                  ends.push_back(p.upper[1]);
-            for (const double a : ends)
-              {
-                bed_gaps.emplace_back(
-                  std::max(0., a - settings.collar_bed_gap),
-                  std::min(extent[1], a + hm + settings.collar_bed_gap));
-                lines[1].push_back(bed_gaps.back().first);
-                lines[1].push_back(bed_gaps.back().second);
-              }
-            // every wythe keeps a bed: the strips stay apart and off the
-            // faces (otherwise a wythe's units rest on nothing)
-            std::sort(bed_gaps.begin(), bed_gaps.end());
-            double left  = 0;
-            bool   apart = true;
-            for (const auto &gap : bed_gaps)
-              {
-                apart = apart && gap.first - left >= tol;
-                left  = gap.second;
-              }
-            if (!apart || extent[1] - left < tol)
-              {
-                std::ostringstream m;
-                m << settings.collar_bed_gap
-                  << " m leaves a wythe without bed-joint mortar: the "
-                     "unfilled strips (the collar joint's "
-                  << hm
-                  << " m and the gap on each side) meet each other or a "
-                     "face of the "
-                  << extent[1] << " m thick wall";
-                AssertThrow(false, ExcParameter("Collar bed gap", m.str()));
-              }
-          }
+        // the unfilled strips of the bed joints along the collar joints
+        const std::vector<std::pair<double, double>> bed_gaps =
+          collar_bed_gaps(pieces, settings, extent[1], tol, lines[1]);
         // the grid: the lines through every face, each interval divided
         // at about the mesh spacing (mortar intervals, h_m, in one cell)
         std::vector<double> grid[3];
         for (unsigned int d = 0; d < 3; ++d)
-          {
-            auto &l = lines[d];
-            std::sort(l.begin(), l.end());
-            std::vector<double> unique;
-            for (const double x : l)
-              if (unique.empty() || x - unique.back() > tol)
-                unique.push_back(x);
-            AssertThrow(unique.front() > -tol &&
-                          std::abs(unique.back() - extent[d]) < tol,
-                        ExcInternalError());
-            for (unsigned int i = 0; i + 1 < unique.size(); ++i)
-              {
-                const double       a = unique[i], b = unique[i + 1];
-                const unsigned int n = std::max(1., std::round((b - a) / h[d]));
-                for (unsigned int k = 0; k < n; ++k)
-                  grid[d].push_back(a + (b - a) * k / n);
-              }
-            grid[d].push_back(unique.back());
-          }
+          grid[d] = grid_from_lines(lines[d], extent[d], h[d], tol);
         // the owner of each grid cell: a piece, or the mortar
         const unsigned int n[3] = {
           static_cast<unsigned int>(grid[0].size()) - 1,
           static_cast<unsigned int>(grid[1].size()) - 1,
           static_cast<unsigned int>(grid[2].size()) - 1};
-        const unsigned int        mortar = pieces.size();
-        std::vector<unsigned int> owner(n[0] * n[1] * n[2], mortar);
-        for (unsigned int p = 0; p < pieces.size(); ++p)
-          {
-            unsigned int from[3], to[3];
-            for (unsigned int d = 0; d < 3; ++d)
-              {
-                from[d] = std::lower_bound(grid[d].begin(),
-                                           grid[d].end(),
-                                           pieces[p].lower[d] - tol) -
-                          grid[d].begin();
-                to[d] = std::lower_bound(grid[d].begin(),
-                                         grid[d].end(),
-                                         pieces[p].upper[d] - tol) -
-                        grid[d].begin();
-              }
-            for (unsigned int k = from[2]; k < to[2]; ++k)
-              for (unsigned int j = from[1]; j < to[1]; ++j)
-                for (unsigned int i = from[0]; i < to[0]; ++i)
-                  owner[i + n[0] * (j + n[1] * k)] = p;
-          }
+        const unsigned int              mortar = pieces.size();
+        const std::vector<unsigned int> owner =
+          cell_owners(pieces, grid, n, tol);
         // the courses (height ranges of the units), for the vertical joints
-        std::vector<std::pair<double, double>> courses;
-        for (const Piece &p : pieces)
-          courses.emplace_back(p.lower[2], p.upper[2]);
-        std::sort(courses.begin(), courses.end());
-        courses.erase(std::unique(courses.begin(),
-                                  courses.end(),
-                                  [&](const auto &a, const auto &b) {
-                                    return std::abs(a.first - b.first) < tol;
-                                  }),
-                      courses.end());
+        const std::vector<std::pair<double, double>> courses =
+          course_ranges(pieces, tol);
         auto is_unit = [&](const int i, const int j, const int k) {
           return i >= 0 && j >= 0 && k >= 0 && i < int(n[0]) && j < int(n[1]) &&
                  k < int(n[2]) && owner[i + n[0] * (j + n[1] * k)] != mortar;

@@ -445,6 +445,39 @@ namespace masonry
       void
       decompose(const double e, const double b, EnvelopePoint &p) const;
 
+      /** The point and its trial state that the returns of update() move
+       * (damage_plasticity.cc). */
+      struct Trial;
+
+      /**
+       * The factor that scales a measure tau (of the part s- or s+) onto
+       * the threshold T: T / tau, with the interaction scale_onto() (the
+       * envelope's damage, its strength f, the other part's utilisation)
+       * (@p tau, @p T and @p f in Pa; @p phi: the point's strength
+       * factor).
+       */
+      double
+      threshold_scale(const double tau,
+                      const double damage,
+                      const double f,
+                      const double other,
+                      const double T,
+                      const double phi) const;
+
+      /** The compressive return of a pass of update(): if the trial's
+       * compressive measure is past the envelope (its strength times
+       * beta), the part s- is returned onto it (radially or by flow());
+       * returns whether it was. */
+      bool
+      compressive_return(Trial &trial, State &updated) const;
+
+      /** The tensile return of a pass of update(): if the trial's tensile
+       * measure is past the envelope, the part s+ is returned onto it
+       * (elastic flow, or crack_return() with `Tensile plastic flow' =
+       * crack); returns whether a crack grew (crack flow only). */
+      bool
+      tensile_return(Trial &trial, State &updated) const;
+
       /** The stress update (see the file documentation). */
       void
       update(const SymmetricTensor<2, 3> &strain,
