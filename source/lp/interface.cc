@@ -50,7 +50,7 @@ namespace masonry
         prm,
         "Time limit",
         "0",
-        {0, 1e+07, "s"},
+        {0, 1e7, "s"},
         "Time limit of one LP solve, in seconds (as measured "
         "by the back-end: CPU time for Clp, wall-clock time "
         "for GLPK); 0 means no limit. A solve that reaches "

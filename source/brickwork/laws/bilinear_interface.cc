@@ -71,26 +71,26 @@ namespace masonry
         declare_ranged_entry(prm,
                              "Tensile strength",
                              "0.2e6",
-                             {0, 1e+09, "Pa"},
+                             {0, 1e9, "Pa"},
                              "Tensile strength f_t of the joint, Pa (> 0); "
                              "typical 0.16-0.25 MPa.");
         declare_ranged_entry(prm,
                              "Cohesion",
                              "0.28e6",
-                             {0, 1e+09, "Pa"},
+                             {0, 1e9, "Pa"},
                              "Shear strength (cohesion) c of the joint, Pa "
                              "(> 0); typical 1.4 f_t.");
         declare_ranged_entry(prm,
                              "Mode I fracture energy",
                              "15",
-                             {0, 1e+06, "N/m"},
+                             {0, 1e6, "N/m"},
                              "Fracture energy G_I in pure opening, J/m^2 = "
                              "N/m (> 0, at least f_t^2 / (2 k_n)); typical "
                              "12-18 N/m.");
         declare_ranged_entry(prm,
                              "Mode II fracture energy",
                              "100",
-                             {0, 1e+06, "N/m"},
+                             {0, 1e6, "N/m"},
                              "Fracture energy G_II in pure shear, J/m^2 = N/m "
                              "(> 0, at least c^2 / (2 k_s)); typical 50-125 "
                              "N/m.");

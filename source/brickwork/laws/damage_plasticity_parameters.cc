@@ -24,11 +24,13 @@ namespace masonry
                               const DamagePlasticityDefaults &defaults)
       {
         using dealii::Patterns::Double;
-        prm.declare_entry("Young's modulus",
-                          defaults.E,
-                          Double(0),
-                          std::string("Initial Young's modulus E0 of the ") +
-                            defaults.what + ", Pa (> 0).");
+        // up to 1e15 Pa: practically rigid bricks (used by the checks)
+        declare_ranged_entry(prm,
+                             "Young's modulus",
+                             defaults.E,
+                             {0, 1e15, "Pa"},
+                             std::string("Initial Young's modulus E0 of the ") +
+                               defaults.what + ", Pa (> 0).");
         prm.declare_entry("Poisson's ratio",
                           defaults.nu,
                           Double(-1, 0.5),
@@ -43,10 +45,11 @@ namespace masonry
                                   const DamagePlasticityDefaults &defaults)
       {
         using dealii::Patterns::Double;
-        prm.declare_entry(
+        declare_ranged_entry(
+          prm,
           "Compressive strength",
           defaults.f_c,
-          Double(0),
+          {0, 1e9, "Pa"},
           "Compressive strength, Pa (> 0): with `Compressive strength "
           "definition' = uniaxial (the default) the uniaxial strength f_c of "
           "the material, the peak of the compressive envelope; with "
@@ -83,20 +86,22 @@ namespace masonry
           Double(0, 1),
           "Stress at the end of the linear part of the compressive "
           "envelope over f_c (dimensionless, 0 < ratio < 1).");
-        prm.declare_entry(
+        declare_ranged_entry(
+          prm,
           "Strain at peak",
           defaults.eps_c,
-          Double(0),
+          {0, 1, "(dimensionless)"},
           "Total strain eps_c at the compressive peak (dimensionless, at "
           "least f_c / E0). Between the elastic limit e0 = ratio f_c / E0 "
           "and eps_c the envelope is sigma = f_c0 + (f_c - f_c0) (k x - "
           "x^2) / (1 + (k - 2) x), x = (e - e0) / (eps_c - e0), k = E0 "
           "(eps_c - e0) / (f_c - f_c0): slope E0 at e0, zero at the peak "
           "(the CEB-FIP/Sargin shape).");
-        prm.declare_entry(
+        declare_ranged_entry(
+          prm,
           "Compressive fracture energy",
           "20000",
-          Double(0),
+          {0, 1e7, "N/m"},
           "Crushing energy G_c, J/m^2 (> 0): after the peak sigma = f_c "
           "exp(-(e - eps_c) / w_c) with w_c = G_c / (f_c l), so that the "
           "area under the softening branch times the element's "
@@ -119,15 +124,17 @@ namespace masonry
                               const DamagePlasticityDefaults &defaults)
       {
         using dealii::Patterns::Double;
-        prm.declare_entry("Tensile strength",
-                          defaults.f_t,
-                          Double(0),
-                          "Uniaxial tensile strength f_t, Pa (> 0); linear "
-                          "up to it.");
-        prm.declare_entry(
+        declare_ranged_entry(prm,
+                             "Tensile strength",
+                             defaults.f_t,
+                             {0, 1e9, "Pa"},
+                             "Uniaxial tensile strength f_t, Pa (> 0); linear "
+                             "up to it.");
+        declare_ranged_entry(
+          prm,
           "Tensile fracture energy",
           defaults.G_f,
-          Double(0),
+          {0, 1e6, "N/m"},
           "Fracture energy G_f, J/m^2 (> 0): after the peak sigma = f_t "
           "exp(-(e - f_t / E0) / w_t), w_t = G_f / (f_t l) - f_t / (2 "
           "E0), so that the whole area under the tension curve times l is "
@@ -165,10 +172,11 @@ namespace masonry
           "Cap of both damages (dimensionless, 0 < d_max < 1): beyond it the "
           "plastic strain takes the rest of the envelope, so the stress "
           "still follows the envelope and the stiffness never vanishes.");
-        prm.declare_entry(
+        declare_ranged_entry(
+          prm,
           "Viscosity",
           "0",
-          Double(0),
+          {0, 1e6, "s"},
           "Viscous regularisation of both damages, s (>= 0; 0: none): d_v = "
           "(d + (mu / dt) d_v,old) / (1 + mu / dt) with dt the pseudo-time "
           "of the step (platen displacement increment / `Platen speed').");
@@ -181,10 +189,11 @@ namespace masonry
           "energy'; false: sigma = f_c beyond eps_c, perfectly plastic in "
           "compression: the material flows at its (confined) strength, the "
           "inelastic strain still split by `Plastic strain ratio').");
-        prm.declare_entry(
+        declare_ranged_entry(
+          prm,
           "Confinement coefficient",
           "0",
-          Double(0),
+          {0, 100, "(dimensionless)"},
           "k in |sigma_1| = f_c + k p, the rise of the compressive strength "
           "with an equal lateral pressure p (triaxial compression, "
           "dimensionless). 0: the value of the cone alone, k0 = (1 + 2 "

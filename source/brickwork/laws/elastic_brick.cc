@@ -19,7 +19,7 @@ namespace masonry
         declare_ranged_entry(prm,
                              "Young's modulus",
                              "10e9",
-                             {0, 1e+15, "Pa"},
+                             {0, 1e15, "Pa"},
                              "Young's modulus of the bricks, Pa (> 0).");
         prm.declare_entry("Poisson's ratio",
                           "0.15",

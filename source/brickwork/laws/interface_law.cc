@@ -47,7 +47,7 @@ namespace masonry
         prm,
         "Normal stiffness",
         "2.5e11",
-        {0, 1e+16, "Pa/m"},
+        {0, 1e16, "Pa/m"},
         "Penalty stiffness k_n of the joint normal to it, Pa/m (> 0). For "
         "enlarged bricks Lourenco and Rots give k_n = E_u E_m / (h_m (E_u - "
         "E_m)) with the unit and mortar moduli E_u, E_m (Pa) and the joint "
@@ -56,7 +56,7 @@ namespace masonry
       declare_ranged_entry(prm,
                            "Shear stiffness",
                            "1.0e11",
-                           {0, 1e+16, "Pa/m"},
+                           {0, 1e16, "Pa/m"},
                            "Penalty stiffness k_s of the joint in both "
                            "directions of slip, Pa/m (> 0); the same formula "
                            "as k_n with the shear moduli G_u, G_m.");
@@ -64,7 +64,7 @@ namespace masonry
         prm,
         "Viscosity",
         "0",
-        {0, 1e+06, "s"},
+        {0, 1e6, "s"},
         "Viscous regularisation of the joint damage, s (>= 0; 0: none): "
         "the damage used is d_v = (d + (mu / dt) d_v,old) / (1 + mu / dt), "
         "with dt the pseudo-time of the step (platen displacement increment "

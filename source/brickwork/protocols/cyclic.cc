@@ -52,7 +52,7 @@ namespace masonry
             prm,
             "Unloading stress",
             "0.1e6",
-            {0, 1e+09, "Pa"},
+            {0, 1e9, "Pa"},
             "An unloading ends when the stress (platen force "
             "/ gross area) has dropped to this, Pa (>= 0): "
             "the small target force of a test. Its last step "

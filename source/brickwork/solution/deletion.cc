@@ -2,6 +2,8 @@
  * @file
  * Element deletion.
  */
+#include <masonry/core/parameters.h>
+
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 
@@ -33,10 +35,11 @@ namespace masonry
       {
         using Patterns::Double;
         using Patterns::Integer;
-        prm.declare_entry(
+        declare_ranged_entry(
+          prm,
           "Deletion strain",
           "0",
-          Double(0),
+          {0, 10, "(dimensionless)"},
           "Element deletion: after a converged step, cells whose maximum "
           "principal strain (of the cell-averaged strain, dimensionless) "
           "exceeds this are removed from the model, the largest first, at "
@@ -44,10 +47,11 @@ namespace masonry
           "cell go with it, and nodes left without a cell are held where "
           "they are. 0: no deletion. Deleted cells are flagged in "
           "solution.pvd (`deleted') and counted in curve.csv.");
-        prm.declare_entry(
+        declare_ranged_entry(
+          prm,
           "Deletion fade opening",
           "0",
-          Double(0),
+          {0, 1, "m"},
           "Gradual deletion, m (>= 0): a cell past `Deletion strain' fades "
           "out instead of going at once: its stress and stiffness are "
           "scaled by 1 - (e1 - Deletion strain) l / this, with e1 the "
@@ -57,10 +61,11 @@ namespace masonry
           "lateral opening whatever the mesh); it is deleted when the "
           "factor reaches 0, then carrying nothing. 0: deleted at once. "
           "The fade of every cell is written to solution.pvd (`fade').");
-        prm.declare_entry(
+        declare_ranged_entry(
+          prm,
           "Deletion crushing length",
           "0",
-          Double(0),
+          {0, 1, "m"},
           "Crushing of split cells, m (>= 0): a cell past `Deletion "
           "strain' (split) also fades with its shortening since then: its "
           "factor is at most 1 - (s - s_split) l / this, with s the largest "
@@ -72,10 +77,11 @@ namespace masonry
           "dissipates f x this / 2 per unit area, so 2 G_fc / f_b gives the "
           "unit's compressive fracture energy); it is deleted when the "
           "factor reaches 0. 0: no crushing fade.");
-        prm.declare_entry(
+        declare_ranged_entry(
+          prm,
           "Deletion stress",
           "0",
-          Double(0),
+          {0, 1e10, "Pa"},
           "Deletion only of cells that carry nothing, Pa (>= 0): a cell "
           "past `Deletion strain' (or at the end of its fade) is deleted "
           "only once the largest absolute principal value of its "

@@ -26,27 +26,32 @@ namespace masonry
       declare_unit_entries(dealii::ParameterHandler &prm)
       {
         using dealii::Patterns::Double;
-        prm.declare_entry("Brick length",
-                          "0.215",
-                          Double(0),
-                          "Length of a brick without mortar, m (>= 1e-6).");
-        prm.declare_entry("Brick width",
-                          "0.1025",
-                          Double(0),
-                          "Width of a brick without mortar, m (>= 1e-6).");
-        prm.declare_entry("Brick height",
-                          "0.065",
-                          Double(0),
-                          "Height of a brick without mortar, m (>= 1e-6).");
-        prm.declare_entry("Joint thickness",
-                          "0.010",
-                          Double(0),
-                          "Thickness of the mortar joints, m (>= 0): each "
-                          "enlarged brick is the brick plus half a joint on "
-                          "every side. `Model = simplified': the joints "
-                          "become zero-thickness interfaces; `detailed': the "
-                          "mortar is meshed as one layer of hexahedra of "
-                          "this thickness (>= 1e-6 then).");
+        declare_ranged_entry(prm,
+                             "Brick length",
+                             "0.215",
+                             {0, 10, "m"},
+                             "Length of a brick without mortar, m (>= 1e-6).");
+        declare_ranged_entry(prm,
+                             "Brick width",
+                             "0.1025",
+                             {0, 10, "m"},
+                             "Width of a brick without mortar, m (>= 1e-6).");
+        declare_ranged_entry(prm,
+                             "Brick height",
+                             "0.065",
+                             {0, 10, "m"},
+                             "Height of a brick without mortar, m (>= 1e-6).");
+        declare_ranged_entry(
+          prm,
+          "Joint thickness",
+          "0.010",
+          {0, 1, "m"},
+          "Thickness of the mortar joints, m (>= 0): each "
+          "enlarged brick is the brick plus half a joint on "
+          "every side. `Model = simplified': the joints "
+          "become zero-thickness interfaces; `detailed': the "
+          "mortar is meshed as one layer of hexahedra of "
+          "this thickness (>= 1e-6 then).");
       }
 
       /** Declare the model of the mortar (`Model') and the unfilled strips

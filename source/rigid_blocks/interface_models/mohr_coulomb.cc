@@ -26,7 +26,7 @@ namespace masonry
           declare_ranged_entry(prm,
                                "Cohesion",
                                "0",
-                               {0, 1e+09, "Pa"},
+                               {0, 1e9, "Pa"},
                                "Cohesion c of the joints, Pa: the shear "
                                "strength at zero normal stress.");
           declare_ranged_entry(prm,
@@ -41,14 +41,14 @@ namespace masonry
           declare_ranged_entry(prm,
                                "Tensile strength",
                                "0",
-                               {0, 1e+09, "Pa"},
+                               {0, 1e9, "Pa"},
                                "Tension cut-off f_t, Pa: the largest normal "
                                "tensile stress. The joint opens at no more "
                                "than min(f_t, c / tan φ) per unit area.");
           declare_ranged_entry(prm,
                                "Compressive strength",
                                "0",
-                               {0, 1e+09, "Pa"},
+                               {0, 1e9, "Pa"},
                                "Compression cap f_c, Pa: the largest normal "
                                "compressive stress (a plane σ_n ≥ −f_c). 0 "
                                "means no cap (infinitely strong in "
