@@ -316,5 +316,49 @@ namespace masonry
       };
     }
 
+    bool
+    zero_is_feasible(const LinearProgram &lp)
+    {
+      for (unsigned int j = 0; j < lp.n_columns(); ++j)
+        if (lp.column_lower()[j] > 0 || lp.column_upper()[j] < 0)
+          return false;
+      for (unsigned int i = 0; i < lp.n_rows(); ++i)
+        if (lp.row_lower()[i] > 0 || lp.row_upper()[i] < 0)
+          return false;
+      return true;
+    }
+
+    Verdict
+    verdict_when_dual_infeasible(
+      const LinearProgram                                &lp,
+      const std::function<std::unique_ptr<ClpSimplex>()> &create,
+      const double                                        time_limit)
+    {
+      // dual infeasible: unbounded if primal feasible, which x = 0
+      // shows when every bound allows it (a mechanism LP with fixed
+      // supports), else phase 1 by the barrier (decide_verdict()) or,
+      // if that is undecided, a solve with zero objective decides
+      Verdict phase_1;
+      if (zero_is_feasible(lp))
+        phase_1.outcome = Verdict::Outcome::unbounded;
+      else
+        {
+          auto pristine = create();
+          phase_1 = decide_verdict(lp, *pristine, false, true, time_limit);
+        }
+      if (phase_1.outcome == Verdict::Outcome::undecided)
+        {
+          auto feasibility = create();
+          for (unsigned int j = 0; j < lp.n_columns(); ++j)
+            feasibility->setObjectiveCoefficient(j, 0.);
+          feasibility->primal();
+          phase_1.iterations += feasibility->numberIterations();
+          if (feasibility->isProvenOptimal())
+            phase_1.outcome = Verdict::Outcome::unbounded;
+          else if (feasibility->isProvenPrimalInfeasible())
+            phase_1.outcome = Verdict::Outcome::infeasible;
+        }
+      return phase_1;
+    }
   } // namespace lp
 } // namespace masonry
