@@ -133,6 +133,46 @@ namespace masonry
                             << ")\n";
           }
       }
+
+      /**
+       * What a generation of the adaptation will cost, said on @p pcout if
+       * more than 10 s: one evaluation took @p one (s); every one of the
+       * @p n_threads threads evolves an island of the whole population
+       * size @p population_size, and the threads share the cores.
+       */
+      void
+      report_generation_cost(dealii::ConditionalOStream &pcout,
+                             const double                one,
+                             const unsigned int          n_threads,
+                             const unsigned int          population_size)
+      {
+        const double threads = n_threads;
+        const double cores =
+          std::max(1u,
+                   std::min(std::thread::hardware_concurrency(),
+                            static_cast<unsigned int>(n_threads)));
+        const double generation = one * population_size * threads / cores;
+        if (generation > 10)
+          {
+            std::ostringstream line;
+            line << "Adaptation: one evaluation takes " << std::setprecision(3)
+                 << one << " s; a generation (" << n_threads << " island(s) of "
+                 << population_size << " evaluations, on " << cores
+                 << " core(s)) about " << generation << " s\n";
+            pcout << line.str();
+          }
+      }
+
+      /** Generation @p g of the adaptation, on @p pcout. */
+      void
+      report_generation(dealii::ConditionalOStream   &pcout,
+                        const adaptation::Generation &g)
+      {
+        pcout << "  generation " << g.generation << ": best "
+              << std::setprecision(8) << g.best << ", mean " << g.mean << ", "
+              << g.evaluations << " evaluations, " << std::setprecision(3)
+              << g.seconds << " s\n";
+      }
     } // namespace
 
     void
@@ -202,16 +242,6 @@ namespace masonry
         }
       const auto   first   = std::chrono::steady_clock::now();
       const double uniform = fitness[0](x0);
-      // the state of the final analysis, after the evaluations
-      const auto finish = [&](const std::vector<double> &genes) {
-        quiet            = false;
-        mesh_vertices    = vertices_from_genes(genes);
-        seconds_geometry = seconds_assembly = seconds_solve = 0;
-        cpu_seconds_solve                                   = 0;
-        // the other threads' copies are not needed for the final analysis
-        workers.clear();
-        n_solves = n_iterations = 0;
-      };
       // (decided on all ranks alike: the island optimiser communicates)
       if (dealii::Utilities::MPI::min(std::isfinite(uniform) ? 1u : 0u,
                                       context.mpi_communicator) == 0)
@@ -219,7 +249,7 @@ namespace masonry
           // an incompatible (or failed) uniform mesh: every optimiser
           // compares finite fitnesses, so nothing would steer it; the
           // uniform mesh is analysed and its result says why
-          finish(x0);
+          finish_adaptation(x0);
           Json a           = Json::object();
           a["optimiser"]   = optimiser_name;
           a["fitness"]     = fitness_name();
@@ -231,42 +261,21 @@ namespace masonry
                 << fitness_name() << " (the result below says why)\n";
           return;
         }
-      {
-        // what a generation will cost, before the first one (silent)
-        // starts: every thread evolves an island of the whole population
-        // size, and the threads share the cores
-        const double one = std::chrono::duration<double>(
-                             std::chrono::steady_clock::now() - first)
-                             .count();
-        const double threads = analyses.size();
-        const double cores =
-          std::max(1u,
-                   std::min(std::thread::hardware_concurrency(),
-                            static_cast<unsigned int>(analyses.size())));
-        const double generation =
-          one * optimiser->population_size * threads / cores;
-        if (generation > 10)
-          {
-            std::ostringstream line;
-            line << "Adaptation: one evaluation takes " << std::setprecision(3)
-                 << one << " s; a generation (" << analyses.size()
-                 << " island(s) of " << optimiser->population_size
-                 << " evaluations, on " << cores << " core(s)) about "
-                 << generation << " s\n";
-            pcout << line.str();
-          }
-      }
+      // what a generation will cost, before the first one (silent)
+      // starts: every thread evolves an island of the whole population
+      // size, and the threads share the cores
+      report_generation_cost(pcout,
+                             std::chrono::duration<double>(
+                               std::chrono::steady_clock::now() - first)
+                               .count(),
+                             analyses.size(),
+                             optimiser->population_size);
       const auto result =
         optimiser->optimise(context.mpi_communicator,
                             fitness,
                             x0,
                             [&](const adaptation::Generation &g) {
-                              pcout << "  generation " << g.generation
-                                    << ": best " << std::setprecision(8)
-                                    << g.best << ", mean " << g.mean << ", "
-                                    << g.evaluations << " evaluations, "
-                                    << std::setprecision(3) << g.seconds
-                                    << " s\n";
+                              report_generation(pcout, g);
                             });
       const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
@@ -279,7 +288,7 @@ namespace masonry
       const bool   improved     = result.best_fitness >= uniform;
       const auto  &best         = improved ? result.best_genes : x0;
       const double best_fitness = improved ? result.best_fitness : uniform;
-      finish(best);
+      finish_adaptation(best);
 
       Json a               = Json::object();
       a["optimiser"]       = optimiser_name;
@@ -321,6 +330,19 @@ namespace masonry
     RigidBlockAnalysis::reuse_evaluations() const
     {
       return !optimiser || optimiser->reuse_evaluations;
+    }
+
+    void
+    RigidBlockAnalysis::finish_adaptation(const std::vector<double> &genes)
+    {
+      // the state of the final analysis, after the evaluations
+      quiet            = false;
+      mesh_vertices    = vertices_from_genes(genes);
+      seconds_geometry = seconds_assembly = seconds_solve = 0;
+      cpu_seconds_solve                                   = 0;
+      // the other threads' copies are not needed for the final analysis
+      workers.clear();
+      n_solves = n_iterations = 0;
     }
   } // namespace analysis
 } // namespace masonry
