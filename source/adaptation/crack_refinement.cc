@@ -258,6 +258,223 @@ namespace masonry
           a.push_back(t);
         return a;
       }
+
+      /**
+       * `Split = blocks`: the blocks that @p refinement marks by their
+       * activities @p activities (block_activity()), their centres added
+       * to @p splits as one more round of splits of each of the
+       * @p n_patches patches and their number to @p n_split. Returns false,
+       * splitting nothing, if none is marked or the split mesh would have
+       * more than `Largest number of blocks`.
+       */
+      bool
+      split_marked_blocks(
+        const adaptation::CrackRefinement                       &refinement,
+        const std::vector<rigid_blocks::Block>                  &blocks,
+        const std::vector<double>                               &activities,
+        const unsigned int                                       n_patches,
+        std::vector<std::vector<std::vector<dealii::Point<2>>>> &splits,
+        unsigned int                                            &n_split)
+      {
+        // the centres of the blocks to split, by patch
+        std::vector<std::vector<dealii::Point<2>>> centres(n_patches);
+        const auto         marked = refinement.mark(activities);
+        const unsigned int n_marked =
+          std::count(marked.begin(), marked.end(), true);
+        if (n_marked == 0 ||
+            blocks.size() + 3 * n_marked > refinement.max_blocks)
+          return false;
+        for (unsigned int b = 0; b < blocks.size(); ++b)
+          if (marked[b])
+            {
+              dealii::Point<2> c;
+              for (const auto &corner : blocks[b].corners)
+                c += 0.25 * corner;
+              centres[blocks[b].patch].push_back(c);
+            }
+        splits.resize(n_patches);
+        for (unsigned int p = 0; p < n_patches; ++p)
+          splits[p].push_back(centres[p]);
+        n_split += n_marked;
+        return true;
+      }
+
+      /**
+       * The crack activity of the strips between the lines @p u (per
+       * patch) and @p v (shared by the patches) of the mesh of @p blocks
+       * (on @p patches), from the activities @p activity of its
+       * @p interfaces (crack_activity()): added to @p su (per patch, one per
+       * u strip) and @p sv (one per v strip).
+       */
+      void
+      strip_activity(const std::vector<rigid_blocks::Interface> &interfaces,
+                     const std::vector<rigid_blocks::Block>     &blocks,
+                     const std::vector<geometry::Patch>         &patches,
+                     const std::vector<std::vector<double>>     &u,
+                     const std::vector<double>                  &v,
+                     const std::vector<double>                  &activity,
+                     std::vector<std::vector<double>>           &su,
+                     std::vector<double>                        &sv)
+      {
+        // crack activity of the strips: an interface on a line u = const
+        // counts for the u strips of its blocks (half each, all of it for
+        // a support), one on a line v = const for their v strips
+        auto add = [&](const unsigned int      b,
+                       const dealii::Point<3> &x,
+                       const double            a,
+                       const double            var) {
+          // the edge of block b nearest to x: 0, 1 at u = const, 2, 3 at
+          // v = const (deal.II's numbering of the corners)
+          const auto &c = blocks[b].corners;
+          const std::array<std::array<unsigned int, 2>, 4> edges = {
+            {{{0, 2}}, {{1, 3}}, {{0, 1}}, {{2, 3}}}};
+          unsigned int nearest = 0;
+          double       d       = std::numeric_limits<double>::max();
+          for (unsigned int e = 0; e < 4; ++e)
+            {
+              const dealii::Point<2> m(0.5 * (c[edges[e][0]] + c[edges[e][1]]));
+              const double de = patches[blocks[b].patch].point(m).distance(x);
+              if (de < d)
+                d = de, nearest = e;
+            }
+          dealii::Point<2> centre;
+          for (const auto &corner : c)
+            centre += 0.25 * corner;
+          const unsigned int p = blocks[b].patch;
+          su[p][strip(u[p], centre[0])] += nearest < 2 ? a : var;
+          sv[strip(v, centre[1])] += nearest < 2 ? var : a;
+        };
+        for (unsigned int k = 0; k < interfaces.size(); ++k)
+          {
+            const double a = activity[2 * k], var = activity[2 * k + 1];
+            if (interfaces[k].second == rigid_blocks::Interface::support)
+              add(interfaces[k].first, interfaces[k].centre, a, var);
+            else
+              {
+                add(interfaces[k].first,
+                    interfaces[k].centre,
+                    0.5 * a,
+                    0.5 * var);
+                add(interfaces[k].second,
+                    interfaces[k].centre,
+                    0.5 * a,
+                    0.5 * var);
+              }
+          }
+      }
+
+      /**
+       * The strips to split: one Dörfler marking by @p refinement of the
+       * u strips @p su of all patches (@p n_u per patch) and of the v
+       * strips @p sv (or one per direction, `Marking = per direction`),
+       * into @p mu (per patch) and @p marked_v. Returns the number of u strips
+       * that each patch splits.
+       */
+      unsigned int
+      mark_strips(const adaptation::CrackRefinement      &refinement,
+                  const std::vector<std::vector<double>> &su,
+                  const std::vector<double>              &sv,
+                  const unsigned int                      n_u,
+                  std::vector<std::vector<bool>>         &mu,
+                  std::vector<bool>                      &marked_v)
+      {
+        const unsigned int n_patches = su.size();
+        // one Dörfler marking of all strips of both directions; then
+        // every patch splits as many u strips as the one that marks most
+        // (its next most active ones)
+        std::vector<double> all;
+        for (const auto &x : su)
+          all.insert(all.end(), x.begin(), x.end());
+        all.insert(all.end(), sv.begin(), sv.end());
+        std::vector<bool> marked;
+        if (refinement.per_direction)
+          {
+            // u strips of all patches, then v strips
+            const double floor =
+              1e-6 * std::accumulate(all.begin(), all.end(), 0.);
+            const unsigned int n = n_patches * n_u;
+            marked =
+              refinement.mark(std::vector<double>(all.begin(), all.begin() + n),
+                              0,
+                              floor);
+            const auto mv = refinement.mark(sv, 0, floor);
+            marked.insert(marked.end(), mv.begin(), mv.end());
+          }
+        else
+          marked = refinement.mark(all);
+        mu.assign(n_patches, {});
+        unsigned int n_mu = 0;
+        for (unsigned int p = 0; p < n_patches; ++p)
+          {
+            mu[p].assign(marked.begin() + p * n_u,
+                         marked.begin() + (p + 1) * n_u);
+            n_mu = std::max<unsigned int>(
+              n_mu, std::count(mu[p].begin(), mu[p].end(), true));
+          }
+        for (unsigned int p = 0; p < n_patches; ++p)
+          while (std::count(mu[p].begin(), mu[p].end(), true) < n_mu)
+            {
+              unsigned int next = n_u;
+              for (unsigned int i = 0; i < n_u; ++i)
+                if (!mu[p][i] && (next == n_u || su[p][i] > su[p][next]))
+                  next = i;
+              mu[p][next] = true;
+            }
+        marked_v.assign(marked.begin() + n_patches * n_u, marked.end());
+        return n_mu;
+      }
+
+      /**
+       * Stage @p s on @p pcout: its mesh (@p n_blocks blocks, @p n_u x
+       * @p n_v per patch, @p locally_refined or not), its fitness @p f
+       * and the wall time @p seconds (s) since the first stage began;
+       * returns the stage's entry of the summary.
+       */
+      Json
+      report_stage(dealii::ConditionalOStream &pcout,
+                   const unsigned int          s,
+                   const unsigned int          n_blocks,
+                   const unsigned int          n_u,
+                   const unsigned int          n_v,
+                   const bool                  locally_refined,
+                   const double                f,
+                   const double                seconds)
+      {
+        {
+          std::ostringstream line;
+          line << "  stage " << s << ": " << n_blocks << " blocks (" << n_u
+               << " x " << n_v << " per patch"
+               << (locally_refined ? ", locally refined" : "") << "), ";
+          if (std::isfinite(f))
+            line << "best " << std::setprecision(8) << f << ", ";
+          else
+            line << "no finite fitness, ";
+          line << std::setprecision(3) << seconds << " s\n";
+          pcout << line.str();
+        }
+        Json stage              = Json::object();
+        stage["blocks"]         = n_blocks;
+        stage["blocks_along_u"] = n_u;
+        stage["blocks_along_v"] = n_v;
+        // (none where the analysis is incompatible or failed: the run
+        // stops refining, and the result of the last mesh says why)
+        if (std::isfinite(f))
+          stage["fitness"] = f;
+        stage["seconds"] = seconds;
+        return stage;
+      }
+
+      /**
+       * A stage's mesh, kept to fall back on: the lines u (per patch) and
+       * v, the rounds of block splits and their number.
+       */
+      struct KeptMesh
+      {
+        std::vector<std::vector<double>>                        u;
+        std::vector<double>                                     v;
+        std::vector<std::vector<std::vector<dealii::Point<2>>>> splits;
+        unsigned int                                            n_split = 0;
+      };
     } // namespace
 
     void
@@ -288,13 +505,7 @@ namespace masonry
       double first = -std::numeric_limits<double>::infinity(), last = first;
       unsigned int n_stages = 0, n_split = 0;
       // the mesh of the last stage with a finite fitness
-      struct Kept
-      {
-        std::vector<std::vector<double>>                        u;
-        std::vector<double>                                     v;
-        std::vector<std::vector<std::vector<dealii::Point<2>>>> splits;
-        unsigned int                                            n_split = 0;
-      } kept;
+      KeptMesh     kept;
       unsigned int failed_stage = 0;
       for (unsigned int s = 0; s < refinement.stages; ++s)
         {
@@ -305,29 +516,14 @@ namespace masonry
                                    std::chrono::steady_clock::now() - start)
                                    .count();
           const auto &blocks = model->blocks();
-          {
-            std::ostringstream line;
-            line << "  stage " << s << ": " << blocks.size() << " blocks ("
-                 << options.n_u << " x " << options.n_v << " per patch"
-                 << (refinement.split_blocks ? ", locally refined" : "")
-                 << "), ";
-            if (std::isfinite(f))
-              line << "best " << std::setprecision(8) << f << ", ";
-            else
-              line << "no finite fitness, ";
-            line << std::setprecision(3) << seconds << " s\n";
-            pcout << line.str();
-          }
-          Json stage              = Json::object();
-          stage["blocks"]         = blocks.size();
-          stage["blocks_along_u"] = options.n_u;
-          stage["blocks_along_v"] = options.n_v;
-          // (none where the analysis is incompatible or failed: the run
-          // stops refining, and the result of the last mesh says why)
-          if (std::isfinite(f))
-            stage["fitness"] = f;
-          stage["seconds"] = seconds;
-          stages.push_back(stage);
+          stages.push_back(report_stage(pcout,
+                                        s,
+                                        blocks.size(),
+                                        options.n_u,
+                                        options.n_v,
+                                        refinement.split_blocks,
+                                        f,
+                                        seconds));
           ++n_stages;
           if (s == 0)
             first = f;
@@ -348,124 +544,33 @@ namespace masonry
           kept = {u, v, options.splits, n_split};
           if (refinement.split_blocks)
             {
-              // the centres of the blocks to split, by patch
-              std::vector<std::vector<dealii::Point<2>>> centres(n_patches);
-              const auto marked = refinement.mark(block_activity(activity));
-              const unsigned int n_marked =
-                std::count(marked.begin(), marked.end(), true);
-              if (n_marked == 0 ||
-                  blocks.size() + 3 * n_marked > refinement.max_blocks)
+              if (!split_marked_blocks(refinement,
+                                       blocks,
+                                       block_activity(activity),
+                                       n_patches,
+                                       options.splits,
+                                       n_split))
                 break;
-              for (unsigned int b = 0; b < blocks.size(); ++b)
-                if (marked[b])
-                  {
-                    dealii::Point<2> c;
-                    for (const auto &corner : blocks[b].corners)
-                      c += 0.25 * corner;
-                    centres[blocks[b].patch].push_back(c);
-                  }
-              options.splits.resize(n_patches);
-              for (unsigned int p = 0; p < n_patches; ++p)
-                options.splits[p].push_back(centres[p]);
-              n_split += n_marked;
               continue;
             }
 
-          // crack activity of the strips: an interface on a line u = const
-          // counts for the u strips of its blocks (half each, all of it for
-          // a support), one on a line v = const for their v strips
-          const auto                      &interfaces = model->interfaces();
-          const auto                      &patches    = geometry->patches();
           std::vector<std::vector<double>> su(n_patches,
                                               std::vector<double>(options.n_u,
                                                                   0.));
           std::vector<double>              sv(options.n_v, 0.);
-          auto                             add = [&](const unsigned int      b,
-                         const dealii::Point<3> &x,
-                         const double            a,
-                         const double            var) {
-            // the edge of block b nearest to x: 0, 1 at u = const, 2, 3 at
-            // v = const (deal.II's numbering of the corners)
-            const auto &c = blocks[b].corners;
-            const std::array<std::array<unsigned int, 2>, 4> edges = {
-              {{{0, 2}}, {{1, 3}}, {{0, 1}}, {{2, 3}}}};
-            unsigned int nearest = 0;
-            double       d = std::numeric_limits<double>::max();
-            for (unsigned int e = 0; e < 4; ++e)
-              {
-                const dealii::Point<2> m(0.5 *
-                                         (c[edges[e][0]] + c[edges[e][1]]));
-                const double de = patches[blocks[b].patch].point(m).distance(x);
-                if (de < d)
-                  d = de, nearest = e;
-              }
-            dealii::Point<2> centre;
-            for (const auto &corner : c)
-              centre += 0.25 * corner;
-            const unsigned int p = blocks[b].patch;
-            su[p][strip(u[p], centre[0])] += nearest < 2 ? a : var;
-            sv[strip(v, centre[1])] += nearest < 2 ? var : a;
-          };
-          for (unsigned int k = 0; k < interfaces.size(); ++k)
-            {
-              const double a = activity[2 * k], var = activity[2 * k + 1];
-              if (interfaces[k].second == rigid_blocks::Interface::support)
-                add(interfaces[k].first, interfaces[k].centre, a, var);
-              else
-                {
-                  add(interfaces[k].first,
-                      interfaces[k].centre,
-                      0.5 * a,
-                      0.5 * var);
-                  add(interfaces[k].second,
-                      interfaces[k].centre,
-                      0.5 * a,
-                      0.5 * var);
-                }
-            }
-          // one Dörfler marking of all strips of both directions; then
-          // every patch splits as many u strips as the one that marks most
-          // (its next most active ones)
-          std::vector<double> all;
-          for (const auto &x : su)
-            all.insert(all.end(), x.begin(), x.end());
-          all.insert(all.end(), sv.begin(), sv.end());
-          std::vector<bool> marked;
-          if (refinement.per_direction)
-            {
-              // u strips of all patches, then v strips
-              const double floor =
-                1e-6 * std::accumulate(all.begin(), all.end(), 0.);
-              const unsigned int n = n_patches * options.n_u;
-              marked               = refinement.mark(
-                std::vector<double>(all.begin(), all.begin() + n), 0, floor);
-              const auto mv = refinement.mark(sv, 0, floor);
-              marked.insert(marked.end(), mv.begin(), mv.end());
-            }
-          else
-            marked = refinement.mark(all);
-          std::vector<std::vector<bool>> mu(n_patches);
-          unsigned int                   n_mu = 0;
-          for (unsigned int p = 0; p < n_patches; ++p)
-            {
-              mu[p].assign(marked.begin() + p * options.n_u,
-                           marked.begin() + (p + 1) * options.n_u);
-              n_mu = std::max<unsigned int>(
-                n_mu, std::count(mu[p].begin(), mu[p].end(), true));
-            }
-          for (unsigned int p = 0; p < n_patches; ++p)
-            while (std::count(mu[p].begin(), mu[p].end(), true) < n_mu)
-              {
-                unsigned int next = options.n_u;
-                for (unsigned int i = 0; i < options.n_u; ++i)
-                  if (!mu[p][i] &&
-                      (next == options.n_u || su[p][i] > su[p][next]))
-                    next = i;
-                mu[p][next] = true;
-              }
-          const std::vector<bool> mv(marked.begin() + n_patches * options.n_u,
-                                     marked.end());
-          const unsigned int      n_mv = std::count(mv.begin(), mv.end(), true);
+          strip_activity(model->interfaces(),
+                         blocks,
+                         geometry->patches(),
+                         u,
+                         v,
+                         activity,
+                         su,
+                         sv);
+          std::vector<std::vector<bool>> mu;
+          std::vector<bool>              mv;
+          const unsigned int             n_mu =
+            mark_strips(refinement, su, sv, options.n_u, mu, mv);
+          const unsigned int n_mv = std::count(mv.begin(), mv.end(), true);
           if (n_mu + n_mv == 0 ||
               n_patches * (options.n_u + n_mu) * (options.n_v + n_mv) >
                 refinement.max_blocks)

@@ -52,14 +52,13 @@ namespace masonry
         return map;
       }
 
-      Result
-      run(const MPI_Comm                                 comm,
-          const PagmoSettings                           &settings,
-          const std::vector<Fitness>                    &fitness,
-          const std::vector<double>                     &x0,
-          const std::function<void(const Generation &)> &progress)
+      /**
+       * The factory of @p settings' algorithm: its own if it has one,
+       * else the one registered under its name. Throws if there is none.
+       */
+      PagmoFactory
+      factory_of(const PagmoSettings &settings)
       {
-        const auto   start  = std::chrono::steady_clock::now();
         PagmoFactory create = settings.create;
         if (create == nullptr)
           {
@@ -71,7 +70,50 @@ namespace masonry
                 "registers one");
             create = f->second;
           }
-        int rank = 0, size = 1;
+        return create;
+      }
+
+      /**
+       * body(t) for t = 0, ..., @p n_threads - 1, each in its own thread
+       * (in this one if there is only one); an exception in any is
+       * rethrown here once all have ended.
+       */
+      void
+      in_threads(const unsigned int                       n_threads,
+                 const std::function<void(unsigned int)> &body)
+      {
+        if (n_threads == 1)
+          return body(0);
+        std::vector<std::exception_ptr> errors(n_threads);
+        std::vector<std::thread>        threads;
+        for (unsigned int t = 0; t < n_threads; ++t)
+          threads.emplace_back([&, t]() {
+            try
+              {
+                body(t);
+              }
+            catch (...)
+              {
+                errors[t] = std::current_exception();
+              }
+          });
+        for (auto &thread : threads)
+          thread.join();
+        for (const auto &e : errors)
+          if (e)
+            std::rethrow_exception(e);
+      }
+
+      Result
+      run(const MPI_Comm                                 comm,
+          const PagmoSettings                           &settings,
+          const std::vector<Fitness>                    &fitness,
+          const std::vector<double>                     &x0,
+          const std::function<void(const Generation &)> &progress)
+      {
+        const auto         start  = std::chrono::steady_clock::now();
+        const PagmoFactory create = factory_of(settings);
+        int                rank = 0, size = 1;
         MPI_Comm_rank(comm, &rank);
         MPI_Comm_size(comm, &size);
         const unsigned int n_threads = fitness.size();
@@ -82,26 +124,7 @@ namespace masonry
         // thread; an exception in any is rethrown here
         const auto parallel =
           [&](const std::function<void(unsigned int)> &body) {
-            if (n_threads == 1)
-              return body(0);
-            std::vector<std::exception_ptr> errors(n_threads);
-            std::vector<std::thread>        threads;
-            for (unsigned int t = 0; t < n_threads; ++t)
-              threads.emplace_back([&, t]() {
-                try
-                  {
-                    body(t);
-                  }
-                catch (...)
-                  {
-                    errors[t] = std::current_exception();
-                  }
-              });
-            for (auto &thread : threads)
-              thread.join();
-            for (const auto &e : errors)
-              if (e)
-                std::rethrow_exception(e);
+            in_threads(n_threads, body);
           };
 
         // island i = rank * n_threads + t has the seed settings.seed + 1000 i

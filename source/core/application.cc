@@ -397,6 +397,113 @@ namespace masonry
       return {};
     }
 
+    /**
+     * The run's first lines on @p pcout: the version, the analysis of
+     * @p file (read into @p prm), the number of MPI ranks of @p comm if
+     * more than one, and the output directory.
+     */
+    void
+    announce_run(dealii::ConditionalOStream     &pcout,
+                 const dealii::ParameterHandler &prm,
+                 const std::string              &file,
+                 const OutputDirectory          &output,
+                 const MPI_Comm                  comm)
+    {
+      pcout << "masonry " << MASONRY_VERSION << ": " << prm.get("Analysis")
+            << " analysis of " << file;
+      if (dealii::Utilities::MPI::n_mpi_processes(comm) > 1)
+        pcout << " on " << dealii::Utilities::MPI::n_mpi_processes(comm)
+              << " MPI ranks";
+      pcout << "\nOutput directory: " << output.path() << "\n";
+      if (output.had_previous_run())
+        pcout << "  (holds an earlier run: the files this run writes are "
+                 "overwritten, the others are left alone)\n";
+    }
+
+    /**
+     * parameters.prm in @p output: every parameter of @p prm as the run
+     * uses it. Throws on every rank of @p comm if rank 0 could not write
+     * it.
+     */
+    void
+    write_used_parameters(const dealii::ParameterHandler &prm,
+                          OutputDirectory                &output,
+                          const MPI_Comm                  comm)
+    {
+      const bool root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+      // rank 0 writes; every rank learns of a failure (no rank may go on
+      // into the analysis' collective operations alone)
+      std::string       prm_error;
+      const std::string used_name = output.file("parameters.prm");
+      if (root)
+        try
+          {
+            OutputFile used(used_name);
+            prm.print_parameters(used, dealii::ParameterHandler::ShortPRM);
+            used.close();
+          }
+        catch (const std::exception &exc)
+          {
+            prm_error = one_line_message(exc);
+          }
+      prm_error = dealii::Utilities::MPI::broadcast(comm, prm_error, 0);
+      AssertThrow(prm_error.empty(), dealii::ExcMessage(prm_error));
+    }
+
+    /**
+     * For an analysis stopped by a non-finite number in @p summary: the
+     * member that was to hold it (created null before the value failed)
+     * taken out of @p summary and named in `non_finite_results`; returns
+     * the run's error message.
+     */
+    std::string
+    non_finite_message(Json &summary)
+    {
+      // the member it was meant for was created (null) before the
+      // value failed: name it, and leave it out of summary.json
+      const std::string path = first_null_member(summary);
+      if (!path.empty())
+        {
+          summary.erase(path.substr(0, path.find_first_of("/[")));
+          summary["non_finite_results"] = Json::array({path});
+        }
+      return "the result '" + (path.empty() ? "?" : path) +
+             "' is not a finite number (a value out of its "
+             "physical range in the parameter file?)";
+    }
+
+    /**
+     * An error of this rank alone, with @p status and @p message: written
+     * to @p summary (summary.json in @p output, by this rank) and to
+     * std::cerr, then every rank of @p comm ended by MPI_Abort.
+     */
+    void
+    abort_all_ranks(const MPI_Comm     comm,
+                    Json              &summary,
+                    OutputDirectory   &output,
+                    const std::string &status,
+                    const std::string &message)
+    {
+      // an error of this rank alone: the others cannot be told, so
+      // this rank says why, records it and ends every rank
+      const unsigned int rank = dealii::Utilities::MPI::this_mpi_process(comm);
+      const std::string  text =
+        "rank " + std::to_string(rank) + " of " +
+        std::to_string(dealii::Utilities::MPI::n_mpi_processes(comm)) + ": " +
+        message;
+      summary["status"]               = status;
+      summary["complete"]             = false;
+      summary["error"]                = text;
+      const std::string summary_error = write_summary_here(summary, output);
+      std::cerr << "masonry: error: " << text << " [the results in "
+                << output.path() << " are incomplete"
+                << (summary_error.empty() ?
+                      "; summary.json has status '" + status + "'" :
+                      "; " + summary_error)
+                << "; every rank is stopped]" << std::endl;
+      MPI_Abort(comm, 1);
+    }
+
     int
     run_file(const std::string &file, const MPI_Comm comm, const bool defaults)
     {
@@ -424,33 +531,9 @@ namespace masonry
       AssertThrow(log_error.empty(), dealii::ExcMessage(log_error));
       dealii::ConditionalOStream pcout(log.stream(), true);
 
-      pcout << "masonry " << MASONRY_VERSION << ": " << prm.get("Analysis")
-            << " analysis of " << file;
-      if (dealii::Utilities::MPI::n_mpi_processes(comm) > 1)
-        pcout << " on " << dealii::Utilities::MPI::n_mpi_processes(comm)
-              << " MPI ranks";
-      pcout << "\nOutput directory: " << output.path() << "\n";
-      if (output.had_previous_run())
-        pcout << "  (holds an earlier run: the files this run writes are "
-                 "overwritten, the others are left alone)\n";
+      announce_run(pcout, prm, file, output, comm);
 
-      // rank 0 writes; every rank learns of a failure (no rank may go on
-      // into the analysis' collective operations alone)
-      std::string       prm_error;
-      const std::string used_name = output.file("parameters.prm");
-      if (root)
-        try
-          {
-            OutputFile used(used_name);
-            prm.print_parameters(used, dealii::ParameterHandler::ShortPRM);
-            used.close();
-          }
-        catch (const std::exception &exc)
-          {
-            prm_error = one_line_message(exc);
-          }
-      prm_error = dealii::Utilities::MPI::broadcast(comm, prm_error, 0);
-      AssertThrow(prm_error.empty(), dealii::ExcMessage(prm_error));
+      write_used_parameters(prm, output, comm);
 
       Json summary               = Json::object();
       summary["analysis"]        = prm.get("Analysis");
@@ -505,42 +588,11 @@ namespace masonry
           std::string status  = "error";
           if (dynamic_cast<const NonFiniteJsonNumber *>(&exc) != nullptr)
             {
-              // the member it was meant for was created (null) before the
-              // value failed: name it, and leave it out of summary.json
-              const std::string path = first_null_member(summary);
-              if (!path.empty())
-                {
-                  summary.erase(path.substr(0, path.find_first_of("/[")));
-                  summary["non_finite_results"] = Json::array({path});
-                }
-              message = "the result '" + (path.empty() ? "?" : path) +
-                        "' is not a finite number (a value out of its "
-                        "physical range in the parameter file?)";
-              status = "failed";
+              message = non_finite_message(summary);
+              status  = "failed";
             }
           if (!all_ranks_failed(error_comm, rank_error_wait))
-            {
-              // an error of this rank alone: the others cannot be told, so
-              // this rank says why, records it and ends every rank
-              const unsigned int rank =
-                dealii::Utilities::MPI::this_mpi_process(comm);
-              const std::string text =
-                "rank " + std::to_string(rank) + " of " +
-                std::to_string(dealii::Utilities::MPI::n_mpi_processes(comm)) +
-                ": " + message;
-              summary["status"]   = status;
-              summary["complete"] = false;
-              summary["error"]    = text;
-              const std::string summary_error =
-                write_summary_here(summary, output);
-              std::cerr << "masonry: error: " << text << " [the results in "
-                        << output.path() << " are incomplete"
-                        << (summary_error.empty() ?
-                              "; summary.json has status '" + status + "'" :
-                              "; " + summary_error)
-                        << "; every rank is stopped]" << std::endl;
-              MPI_Abort(comm, 1);
-            }
+            abort_all_ranks(comm, summary, output, status, message);
           dealii::Utilities::MPI::free_communicator(error_comm);
           fail(status, message);
         }

@@ -13,7 +13,9 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <memory>
+#include <optional>
 #include <unordered_map>
 
 #include "clp_barrier.h"
@@ -75,19 +77,6 @@ namespace masonry
         return true;
       }
 
-      /** Whether x = 0 satisfies every row and column bound of @p lp. */
-      bool
-      zero_is_feasible(const LinearProgram &lp)
-      {
-        for (unsigned int j = 0; j < lp.n_columns(); ++j)
-          if (lp.column_lower()[j] > 0 || lp.column_upper()[j] < 0)
-            return false;
-        for (unsigned int i = 0; i < lp.n_rows(); ++i)
-          if (lp.row_lower()[i] > 0 || lp.row_upper()[i] < 0)
-            return false;
-        return true;
-      }
-
       /** A barrier's interior point kept without crossover. */
       struct Interior
       {
@@ -134,6 +123,183 @@ namespace masonry
                 static_cast<unsigned char>(ClpSimplex::basic));
           }
         return basis;
+      }
+
+      /**
+       * What one solve() has done so far, passed from each of its stages
+       * to the next.
+       */
+      struct Attempt
+      {
+        /** The Clp model of the LP that the stages solve. */
+        std::unique_ptr<ClpSimplex> model;
+        /** The method that solves @p model ("dual simplex", ...). */
+        std::string method;
+        /** Whether the result is settled (nothing more to solve). */
+        bool done = false;
+        /** Whether a simplex ran from a stored basis. */
+        bool warm = false;
+        /**
+         * Whether the route through the dual proved the LP without a dual
+         * feasible point (DualRoute::dual_infeasible).
+         */
+        bool dual_infeasible = false;
+        /** Whether the barrier's interior point is the result. */
+        bool kept_interior = false;
+        /** Whether the barrier with crossover already ran on @p model. */
+        bool barrier_ran = false;
+        /** The barrier's interior point, if one was checked. */
+        Interior interior;
+        /** What the auxiliary LPs of decide_verdict() found, if they ran. */
+        Verdict verdict;
+      };
+
+      /**
+       * The optimal vertex in @p model, read into @p solution, failed the
+       * check at @p tolerance: the primal simplex from its basis on the
+       * unscaled problem, its vertex kept if it checks out better, and
+       * the message says how it ended.
+       */
+      void
+      resolve_unscaled(const LinearProgram &lp,
+                       ClpSimplex          &model,
+                       const double         tolerance,
+                       Solution            &solution)
+      {
+        const unsigned int n = lp.n_columns(), m = lp.n_rows();
+        // a vertex optimal only within Clp's tolerances on its scaled
+        // problem: the primal simplex from its basis on the unscaled
+        // one, kept if it checks out better
+        const std::string first = solution.check.describe();
+        model.scaling(0);
+        model.primal(1);
+        solution.iterations += model.numberIterations();
+        if (model.isProvenOptimal())
+          {
+            std::vector<double> x(model.primalColumnSolution(),
+                                  model.primalColumnSolution() + n),
+              y(model.dualRowSolution(), model.dualRowSolution() + m);
+            const PairCheck again = check_pair(lp, x, y);
+            const auto      worst = [](const PairCheck &c) {
+              return std::max(
+                {c.primal_residual, c.dual_residual, c.relative_gap()});
+            };
+            if (worst(again) < worst(solution.check))
+              {
+                solution.x         = std::move(x);
+                solution.row_duals = std::move(y);
+                solution.objective = lp.objective_value(solution.x);
+                solution.check     = again;
+              }
+          }
+        solution.message +=
+          " (failed the check, " + first +
+          (solution.check.within(tolerance) ?
+             std::string("; solved again by the primal simplex on the "
+                         "unscaled problem)") :
+             "; still failing after a re-solve: " + solution.check.describe() +
+               ")");
+      }
+
+      /**
+       * The status and message of @p solution for an LP without a dual
+       * feasible point, from @p phase_1 (verdict_when_dual_infeasible()):
+       * unbounded, infeasible, or undecided.
+       */
+      void
+      report_dual_infeasible(Verdict &&phase_1, Solution &solution)
+      {
+        if (phase_1.outcome == Verdict::Outcome::unbounded)
+          {
+            solution.status = Status::unbounded;
+            solution.message =
+              "Clp: unbounded (dual infeasible" +
+              (phase_1.description.empty() ? std::string() :
+                                             ", " + phase_1.description) +
+              ")";
+          }
+        else if (phase_1.outcome == Verdict::Outcome::infeasible)
+          {
+            solution.status = Status::infeasible;
+            solution.message =
+              "Clp: primal and dual infeasible" +
+              (phase_1.description.empty() ? std::string() :
+                                             " (" + phase_1.description + ")");
+            solution.row_misfit = std::move(phase_1.row_misfit);
+          }
+        else
+          solution.message = "Clp: dual infeasible, primal feasibility "
+                             "undecided";
+      }
+
+      /**
+       * `automatic`: the optimal vertex of the dual LP @p solved (@p dual,
+       * or @p reduced's copy of it without singleton rows), found by
+       * @p method, restored into @p model as a basis of the LP and cleaned
+       * up to a vertex of the LP. Adds the pivots to @p iterations.
+       * Returns whether @p model ended proven optimal.
+       */
+      bool
+      vertex_from_dual(ClpSimplex          &model,
+                       ClpSimplex          &dual,
+                       const SingletonRows &reduced,
+                       ClpSimplex          &solved,
+                       const std::string   &method,
+                       unsigned int        &iterations)
+      {
+        // after the barrier, a vertex optimal only for Clp's scaled dual
+        // LP (secondary status) maps back to a basis the clean-up wanders
+        // from (barrel corner, 24 x 32 per half: > 200 CPU s); a primal
+        // pass on the unscaled dual LP and an unscaled clean-up fix it
+        // (contrib/benchmarks/lp_solvers/results-2026-11-24h.md, also why
+        // not after the primal simplex)
+        const bool unscaled =
+          method == "barrier" && solved.secondaryStatus() != 0;
+        if (unscaled)
+          {
+            solved.scaling(0);
+            solved.primal(1);
+            iterations += solved.numberIterations();
+            if (!solved.isProvenOptimal())
+              return false;
+          }
+        if (reduced.model)
+          expand(reduced, dual);
+        static_cast<ClpSimplexOther &>(model).restoreFromDual(&dual);
+        if (unscaled)
+          model.scaling(0);
+        // safeguard: clean-ups took at most 323 + 179 pivots (55008 rows);
+        // past the cap the LP is solved directly
+        model.setMaximumIterations(1000 + model.numberRows() / 20);
+        // clean up from the restored basis: a vertex of the original
+        // problem. The basis is the dual LP's optimal one, so dual
+        // feasible; the dual simplex repairs its primal values (off by
+        // the dual LP's tolerances) in a few pivots, where the primal
+        // simplex wandered to a vertex up to 2e-5 too high
+        // (contrib/benchmarks/lp_solvers/results-2026-11-24g.md). With
+        // dual infeasibilities the primal simplex starts feasible.
+        const bool dual_feasible = model.numberDualInfeasibilities() == 0;
+        if (dual_feasible)
+          model.dual(0);
+        else
+          model.primal(0);
+        // if that vertex is optimal only for Clp's scaled problem
+        // (secondary status), one more pass of the primal simplex on the
+        // unscaled one (the barrel corner example came out 2.8e-8 high
+        // without it). Tolerances of 1e-9 cost the corner example at
+        // 12 x 16 blocks per half 130000 iterations; the dual simplex
+        // here (on unscaled primal infeasibilities only) fell back to
+        // the primal one on the Bothwell vault at 24 x 32 blocks per half
+        // and had not finished after 5 CPU minutes (1.3 s by the primal).
+        if (model.isProvenOptimal() && model.secondaryStatus() != 0)
+          {
+            iterations += model.numberIterations();
+            model.scaling(0);
+            model.primal(1);
+          }
+        iterations += model.numberIterations();
+        model.setMaximumIterations(COIN_INT_MAX);
+        return model.isProvenOptimal();
       }
     } // namespace
 
@@ -224,6 +390,101 @@ namespace masonry
                          const LinearProgram &lp,
                          Interior            *interior,
                          Verdict             &verdict) const;
+
+      /**
+       * solve_through_dual() with the barrier: the barrier on the dual LP
+       * @p solved, stopped by @p diverging; with @p interior, its point is
+       * the result if @p keep accepts it (which sets @p checked). A point
+       * stopped or @p far_off the LP lets @p decide (the auxiliary LPs)
+       * judge the LP. Adds the barrier's iterations to @p iterations.
+       * Returns how the route ended, or nothing when it goes on to the
+       * vertex the crossover left in @p solved.
+       */
+      std::optional<DualRoute>
+      barrier_on_dual(ClpSimplex                                     &solved,
+                      Interior                                       *interior,
+                      const std::function<bool(const ClpSimplex &)>  &keep,
+                      const std::function<bool(const ClpInterior &)> &diverging,
+                      const std::function<bool()>                    &far_off,
+                      const std::function<bool(bool)>                &decide,
+                      bool                                           &checked,
+                      unsigned int &iterations) const;
+
+      /**
+       * solve_through_dual() with a simplex @p method on the dual LP
+       * @p solved; the primal simplex stops after @p simplex_cap pivots,
+       * when @p decide (the auxiliary LPs) judges the LP, or else goes on.
+       * Adds the pivots to @p iterations. Returns DualRoute::decided if the
+       * auxiliary LPs decided, else nothing.
+       */
+      std::optional<DualRoute>
+      simplex_on_dual(ClpSimplex                      &solved,
+                      const std::string               &method,
+                      const int                        simplex_cap,
+                      const std::function<bool(bool)> &decide,
+                      unsigned int                    &iterations) const;
+
+      /**
+       * solve_through_dual() after @p method ran on the dual LP @p solved:
+       * how the route ends if the dual LP has no proven optimum (the
+       * barrier's infeasibility confirmed by the primal simplex, the
+       * primal simplex's verdicts, @p decide for an unbounded dual LP).
+       * Adds the pivots to @p iterations. Nothing if @p solved is optimal.
+       */
+      static std::optional<DualRoute>
+      dual_without_optimum(ClpSimplex                      &solved,
+                           const std::string               &method,
+                           const std::function<bool(bool)> &decide,
+                           unsigned int                    &iterations);
+
+      /**
+       * solve() from the stored basis @p basis: a simplex without presolve
+       * on @p attempt's model; the attempt is done on a verdict, else its
+       * model is fresh again. Adds the pivots to @p iterations.
+       */
+      void
+      solve_from_basis(const LinearProgram &lp,
+                       const ClpBasis      &basis,
+                       Attempt             &attempt,
+                       unsigned int        &iterations) const;
+
+      /**
+       * solve() without a basis (or after a warm start that did not
+       * decide): the barrier kept without crossover (@p use_interior with
+       * `Algorithm = barrier`), the route through the dual (`automatic`),
+       * then `Algorithm` on the LP itself unless @p attempt is done. Adds
+       * the iterations to @p iterations.
+       */
+      void
+      solve_cold(const LinearProgram &lp,
+                 const bool           use_interior,
+                 Attempt             &attempt,
+                 unsigned int        &iterations) const;
+
+      /**
+       * The verdict of @p attempt's solve of the LP itself confirmed on the
+       * original problem where it is not reliable: after presolve, an
+       * infeasible verdict not from the primal simplex, a barrier's
+       * optimum whose duals are no certificate. Adds the pivots to
+       * @p iterations.
+       */
+      void
+      confirm(const LinearProgram &lp,
+              Attempt             &attempt,
+              unsigned int        &iterations) const;
+
+      /**
+       * The optimal vertex in @p model into @p solution, checked (and
+       * solved again unscaled if it fails the check); the message says
+       * why @p interior was not kept, if it was checked. The basis goes to
+       * @p basis_out if given.
+       */
+      void
+      read_optimum(const LinearProgram &lp,
+                   ClpSimplex          &model,
+                   const Interior      &interior,
+                   ClpBasis            *basis_out,
+                   Solution            &solution) const;
     };
 
     void
@@ -416,152 +677,28 @@ namespace masonry
             }
           if (method == "barrier")
             {
-              bool stopped = false;
-              bool kept    = false;
-              if (interior)
-                kept = barrier_with_crossover(
-                  solved, keep, false, 1e-12, diverging, &stopped);
-              else
-                barrier_with_crossover(
-                  solved, nullptr, true, 1e-12, diverging, &stopped);
-              iterations += solved.numberIterations();
-              if (kept)
-                return DualRoute::interior;
-              if ((stopped || far_off()) && decide(false))
-                return DualRoute::decided;
-              if (stopped)
-                {
-                  // a false alarm (the LP has an optimum): the barrier
-                  // again as without the rule, to the same point
-                  checked = false;
-                  if (interior)
-                    kept = barrier_with_crossover(solved, keep);
-                  else
-                    barrier_with_crossover(solved);
-                  iterations += solved.numberIterations();
-                  if (kept)
-                    return DualRoute::interior;
-                }
-              else if (interior)
-                {
-                  // a rejected point: the barrier again and the crossover,
-                  // as before
-                  barrier_with_crossover(solved);
-                  iterations += solved.numberIterations();
-                }
+              const std::optional<DualRoute> ended =
+                barrier_on_dual(solved,
+                                interior,
+                                keep,
+                                diverging,
+                                far_off,
+                                decide,
+                                checked,
+                                iterations);
+              if (ended)
+                return *ended;
             }
-          else if (method == "primal simplex" && solved.numberRows() >= 2000)
-            {
-              // from a basis of the free columns (tangential contact
-              // forces; Clp replaces dependent ones by slacks when it
-              // factorises): half the pivots of Clp's start, whole runs
-              // x0.80-0.92 CPU from 12 x 16 Bothwell blocks per half (2304
-              // rows) up; no gain at 9 x 12 (1296 rows) and 6 x 8, where
-              // the LPs of the examples are
-              // (contrib/benchmarks/lp_solvers/results-2026-11-28b.md)
-              free_columns_basic(solved);
-              solved.setMaximumIterations(simplex_cap);
-              solved.primal(0);
-              iterations += solved.numberIterations();
-            }
-          else
-            {
-              if (method == "primal simplex")
-                solved.setMaximumIterations(simplex_cap);
-              run(solved, method, false);
-              iterations += solved.numberIterations();
-            }
-          if (method == "primal simplex" && solved.hitMaximumIterations())
-            {
-              // past the cap the dual LP is probably infeasible: decide by
-              // the auxiliary LPs, else go on from where the simplex is
-              if (decide(false))
-                return DualRoute::decided;
-              solved.setMaximumIterations(COIN_INT_MAX);
-              solved.primal(0);
-              iterations += solved.numberIterations();
-            }
-          if (method == "barrier" && solved.isProvenPrimalInfeasible())
-            {
-              // the barrier's infeasibility verdict is not reliable: the
-              // primal simplex from its last point confirms it (or finds
-              // the optimum), cheaper than solving the LP itself again
-              solved.primal(1);
-              iterations += solved.numberIterations();
-              if (solved.isProvenPrimalInfeasible())
-                return DualRoute::dual_infeasible;
-            }
-          if (!solved.isProvenOptimal())
-            {
-              // the primal simplex's infeasibility verdict on the dual LP
-              // is reliable (the barrier's is not: it may stop on
-              // numerical trouble; nor is the dual simplex's, which
-              // `automatic' does not use here), and saves solving the LP
-              // itself again
-              if (method == "primal simplex" &&
-                  solved.isProvenPrimalInfeasible())
-                return DualRoute::dual_infeasible;
-              // an unbounded dual LP: the LP is infeasible if phase 1
-              // says so (else it is solved directly)
-              if (method == "primal simplex" &&
-                  solved.isProvenDualInfeasible() && decide(false))
-                return DualRoute::decided;
-              return DualRoute::failed;
-            }
-          // after the barrier, a vertex optimal only for Clp's scaled dual
-          // LP (secondary status) maps back to a basis the clean-up wanders
-          // from (barrel corner, 24 x 32 per half: > 200 CPU s); a primal
-          // pass on the unscaled dual LP and an unscaled clean-up fix it
-          // (contrib/benchmarks/lp_solvers/results-2026-11-24h.md, also why
-          // not after the primal simplex)
-          const bool unscaled =
-            method == "barrier" && solved.secondaryStatus() != 0;
-          if (unscaled)
-            {
-              solved.scaling(0);
-              solved.primal(1);
-              iterations += solved.numberIterations();
-              if (!solved.isProvenOptimal())
-                return DualRoute::failed;
-            }
-          if (reduced.model)
-            expand(reduced, *dual);
-          static_cast<ClpSimplexOther &>(model).restoreFromDual(dual.get());
-          if (unscaled)
-            model.scaling(0);
-          // safeguard: clean-ups took at most 323 + 179 pivots (55008 rows);
-          // past the cap the LP is solved directly
-          model.setMaximumIterations(1000 + model.numberRows() / 20);
-          // clean up from the restored basis: a vertex of the original
-          // problem. The basis is the dual LP's optimal one, so dual
-          // feasible; the dual simplex repairs its primal values (off by
-          // the dual LP's tolerances) in a few pivots, where the primal
-          // simplex wandered to a vertex up to 2e-5 too high
-          // (contrib/benchmarks/lp_solvers/results-2026-11-24g.md). With
-          // dual infeasibilities the primal simplex starts feasible.
-          const bool dual_feasible = model.numberDualInfeasibilities() == 0;
-          if (dual_feasible)
-            model.dual(0);
-          else
-            model.primal(0);
-          // if that vertex is optimal only for Clp's scaled problem
-          // (secondary status), one more pass of the primal simplex on the
-          // unscaled one (the barrel corner example came out 2.8e-8 high
-          // without it). Tolerances of 1e-9 cost the corner example at
-          // 12 x 16 blocks per half 130000 iterations; the dual simplex
-          // here (on unscaled primal infeasibilities only) fell back to
-          // the primal one on the Bothwell vault at 24 x 32 blocks per half
-          // and had not finished after 5 CPU minutes (1.3 s by the primal).
-          if (model.isProvenOptimal() && model.secondaryStatus() != 0)
-            {
-              iterations += model.numberIterations();
-              model.scaling(0);
-              model.primal(1);
-            }
-          iterations += model.numberIterations();
-          model.setMaximumIterations(COIN_INT_MAX);
-          return model.isProvenOptimal() ? DualRoute::optimal :
-                                           DualRoute::failed;
+          else if (const std::optional<DualRoute> ended = simplex_on_dual(
+                     solved, method, simplex_cap, decide, iterations))
+            return *ended;
+          if (const std::optional<DualRoute> ended =
+                dual_without_optimum(solved, method, decide, iterations))
+            return *ended;
+          return vertex_from_dual(
+                   model, *dual, reduced, solved, method, iterations) ?
+                   DualRoute::optimal :
+                   DualRoute::failed;
         }
       catch (const CoinError &e)
         {
@@ -569,6 +706,129 @@ namespace masonry
           // directly
           return DualRoute::failed;
         }
+    }
+
+    std::optional<Clp::DualRoute>
+    Clp::barrier_on_dual(
+      ClpSimplex                                     &solved,
+      Interior                                       *interior,
+      const std::function<bool(const ClpSimplex &)>  &keep,
+      const std::function<bool(const ClpInterior &)> &diverging,
+      const std::function<bool()>                    &far_off,
+      const std::function<bool(bool)>                &decide,
+      bool                                           &checked,
+      unsigned int                                   &iterations) const
+    {
+      bool stopped = false;
+      bool kept    = false;
+      if (interior)
+        kept = barrier_with_crossover(
+          solved, keep, false, 1e-12, diverging, &stopped);
+      else
+        barrier_with_crossover(
+          solved, nullptr, true, 1e-12, diverging, &stopped);
+      iterations += solved.numberIterations();
+      if (kept)
+        return DualRoute::interior;
+      if ((stopped || far_off()) && decide(false))
+        return DualRoute::decided;
+      if (stopped)
+        {
+          // a false alarm (the LP has an optimum): the barrier
+          // again as without the rule, to the same point
+          checked = false;
+          if (interior)
+            kept = barrier_with_crossover(solved, keep);
+          else
+            barrier_with_crossover(solved);
+          iterations += solved.numberIterations();
+          if (kept)
+            return DualRoute::interior;
+        }
+      else if (interior)
+        {
+          // a rejected point: the barrier again and the crossover,
+          // as before
+          barrier_with_crossover(solved);
+          iterations += solved.numberIterations();
+        }
+      return std::nullopt;
+    }
+
+    std::optional<Clp::DualRoute>
+    Clp::simplex_on_dual(ClpSimplex                      &solved,
+                         const std::string               &method,
+                         const int                        simplex_cap,
+                         const std::function<bool(bool)> &decide,
+                         unsigned int                    &iterations) const
+    {
+      if (method == "primal simplex" && solved.numberRows() >= 2000)
+        {
+          // from a basis of the free columns (tangential contact
+          // forces; Clp replaces dependent ones by slacks when it
+          // factorises): half the pivots of Clp's start, whole runs
+          // x0.80-0.92 CPU from 12 x 16 Bothwell blocks per half (2304
+          // rows) up; no gain at 9 x 12 (1296 rows) and 6 x 8, where
+          // the LPs of the examples are
+          // (contrib/benchmarks/lp_solvers/results-2026-11-28b.md)
+          free_columns_basic(solved);
+          solved.setMaximumIterations(simplex_cap);
+          solved.primal(0);
+          iterations += solved.numberIterations();
+        }
+      else
+        {
+          if (method == "primal simplex")
+            solved.setMaximumIterations(simplex_cap);
+          run(solved, method, false);
+          iterations += solved.numberIterations();
+        }
+      if (method == "primal simplex" && solved.hitMaximumIterations())
+        {
+          // past the cap the dual LP is probably infeasible: decide by
+          // the auxiliary LPs, else go on from where the simplex is
+          if (decide(false))
+            return DualRoute::decided;
+          solved.setMaximumIterations(COIN_INT_MAX);
+          solved.primal(0);
+          iterations += solved.numberIterations();
+        }
+      return std::nullopt;
+    }
+
+    std::optional<Clp::DualRoute>
+    Clp::dual_without_optimum(ClpSimplex                      &solved,
+                              const std::string               &method,
+                              const std::function<bool(bool)> &decide,
+                              unsigned int                    &iterations)
+    {
+      if (method == "barrier" && solved.isProvenPrimalInfeasible())
+        {
+          // the barrier's infeasibility verdict is not reliable: the
+          // primal simplex from its last point confirms it (or finds
+          // the optimum), cheaper than solving the LP itself again
+          solved.primal(1);
+          iterations += solved.numberIterations();
+          if (solved.isProvenPrimalInfeasible())
+            return DualRoute::dual_infeasible;
+        }
+      if (!solved.isProvenOptimal())
+        {
+          // the primal simplex's infeasibility verdict on the dual LP
+          // is reliable (the barrier's is not: it may stop on
+          // numerical trouble; nor is the dual simplex's, which
+          // `automatic' does not use here), and saves solving the LP
+          // itself again
+          if (method == "primal simplex" && solved.isProvenPrimalInfeasible())
+            return DualRoute::dual_infeasible;
+          // an unbounded dual LP: the LP is infeasible if phase 1
+          // says so (else it is solved directly)
+          if (method == "primal simplex" && solved.isProvenDualInfeasible() &&
+              decide(false))
+            return DualRoute::decided;
+          return DualRoute::failed;
+        }
+      return std::nullopt;
     }
 
     Solution
@@ -604,45 +864,40 @@ namespace masonry
       return solution;
     }
 
-    Solution
-    Clp::solve(const LinearProgram &lp,
-               const ClpBasis      *basis_in,
-               ClpBasis            *basis_out) const
+    void
+    Clp::solve_from_basis(const LinearProgram &lp,
+                          const ClpBasis      &basis,
+                          Attempt             &attempt,
+                          unsigned int        &iterations) const
     {
-      const auto start_time = std::chrono::steady_clock::now();
-      Solution   solution;
+      std::unique_ptr<ClpSimplex> &model = attempt.model;
+      // a simplex from the stored basis, without presolve (which would
+      // drop it); its verdict is then handled as a cold one's
+      model->copyinStatus(basis.status.data());
+      if (algorithm == "primal simplex")
+        model->primal(0);
+      else
+        model->dual(0);
+      iterations += model->numberIterations();
+      attempt.method =
+        algorithm == "primal simplex" ? "primal simplex" : "dual simplex";
+      attempt.warm = true;
+      attempt.done = model->isProvenOptimal() ||
+                     model->isProvenPrimalInfeasible() ||
+                     model->isProvenDualInfeasible();
+      if (!attempt.done)
+        model = create(lp);
+    }
 
-      std::unique_ptr<ClpSimplex> model  = create(lp);
-      std::string                 method = algorithm;
-      bool                        done   = false;
-      bool                        warm   = false;
-      if (basis_in)
-        {
-          // a simplex from the stored basis, without presolve (which would
-          // drop it); its verdict is then handled as a cold one's
-          model->copyinStatus(basis_in->status.data());
-          if (algorithm == "primal simplex")
-            model->primal(0);
-          else
-            model->dual(0);
-          solution.iterations += model->numberIterations();
-          method =
-            algorithm == "primal simplex" ? "primal simplex" : "dual simplex";
-          warm = true;
-          done = model->isProvenOptimal() ||
-                 model->isProvenPrimalInfeasible() ||
-                 model->isProvenDualInfeasible();
-          if (!done)
-            model = create(lp);
-        }
-      bool    dual_infeasible = false;
-      Verdict verdict;
-      // `Crossover = never': not for a caller that keeps the basis (warm
-      // starts: minimum thickness)
-      const bool use_interior  = no_crossover && !basis_out;
-      bool       kept_interior = false, barrier_ran = false;
-      Interior   interior;
-      if (!warm && algorithm == "barrier" && use_interior)
+    void
+    Clp::solve_cold(const LinearProgram &lp,
+                    const bool           use_interior,
+                    Attempt             &attempt,
+                    unsigned int        &iterations) const
+    {
+      std::unique_ptr<ClpSimplex> &model    = attempt.model;
+      Interior                    &interior = attempt.interior;
+      if (!attempt.warm && algorithm == "barrier" && use_interior)
         {
           // the LP itself by the barrier, without presolve
           const auto keep = [&](const ClpSimplex &point) {
@@ -653,52 +908,63 @@ namespace masonry
             interior.check = check_pair(lp, interior.x, interior.y);
             return interior.check.within(interior_tolerance);
           };
-          kept_interior = barrier_with_crossover(*model, keep);
+          attempt.kept_interior = barrier_with_crossover(*model, keep);
           // otherwise the crossover ran: as run() without presolve
-          done        = kept_interior;
-          barrier_ran = !kept_interior;
-          if (kept_interior)
-            solution.iterations += model->numberIterations();
+          attempt.done        = attempt.kept_interior;
+          attempt.barrier_ran = !attempt.kept_interior;
+          if (attempt.kept_interior)
+            iterations += model->numberIterations();
         }
-      if (!warm && algorithm == "automatic")
+      if (!attempt.warm && algorithm == "automatic")
         {
           // measured (contrib/benchmarks/lp_solvers): the explicit dual LP,
           // with more columns than rows (Mohr-Coulomb) by the barrier,
           // otherwise (no tension no sliding: many rows, few columns) by
           // the primal simplex; the LP itself by the same method if that
           // fails
-          method = lp.n_columns() >= lp.n_rows() ? "barrier" : "primal simplex";
+          attempt.method =
+            lp.n_columns() >= lp.n_rows() ? "barrier" : "primal simplex";
           const DualRoute route =
             solve_through_dual(*model,
-                               method,
-                               solution.iterations,
+                               attempt.method,
+                               iterations,
                                lp,
                                use_interior ? &interior : nullptr,
-                               verdict);
-          kept_interior = route == DualRoute::interior;
-          done          = route == DualRoute::optimal || kept_interior ||
-                 route == DualRoute::decided;
-          dual_infeasible = route == DualRoute::dual_infeasible;
-          if (!done && !dual_infeasible)
+                               attempt.verdict);
+          attempt.kept_interior = route == DualRoute::interior;
+          attempt.done = route == DualRoute::optimal || attempt.kept_interior ||
+                         route == DualRoute::decided;
+          attempt.dual_infeasible = route == DualRoute::dual_infeasible;
+          if (!attempt.done && !attempt.dual_infeasible)
             model = create(lp);
         }
-      if (!done && !dual_infeasible)
+      if (!attempt.done && !attempt.dual_infeasible)
         {
-          if (!barrier_ran)
-            run(*model, method, presolve);
-          solution.iterations += model->numberIterations();
+          if (!attempt.barrier_ran)
+            run(*model, attempt.method, presolve);
+          iterations += model->numberIterations();
         }
-      if (!done && !dual_infeasible && !model->isProvenOptimal() && presolve &&
+    }
+
+    void
+    Clp::confirm(const LinearProgram &lp,
+                 Attempt             &attempt,
+                 unsigned int        &iterations) const
+    {
+      std::unique_ptr<ClpSimplex> &model  = attempt.model;
+      std::string                 &method = attempt.method;
+      if (attempt.done || attempt.dual_infeasible)
+        return;
+      if (!model->isProvenOptimal() && presolve &&
           !model->hitMaximumIterations())
         {
           // confirm infeasibility/unboundedness (or recover from a failure)
           // on the original problem: presolve's verdicts are less reliable
           model = create(lp);
           run(*model, method, false);
-          solution.iterations += model->numberIterations();
+          iterations += model->numberIterations();
         }
-      if (!done && !dual_infeasible && model->isProvenPrimalInfeasible() &&
-          method != "primal simplex")
+      if (model->isProvenPrimalInfeasible() && method != "primal simplex")
         {
           // the dual simplex (or the barrier) misjudges some feasible LPs
           // with thin feasible sets as infeasible (the normalised collapse
@@ -707,11 +973,11 @@ namespace masonry
           // original problem
           model = create(lp);
           run(*model, "primal simplex", false);
-          solution.iterations += model->numberIterations();
+          iterations += model->numberIterations();
           method = "primal simplex";
         }
-      if (!done && !dual_infeasible && model->isProvenOptimal() &&
-          method == "barrier" && !certificate_ok(lp, *model))
+      if (model->isProvenOptimal() && method == "barrier" &&
+          !certificate_ok(lp, *model))
         {
           // the barrier maps infinite bounds to huge finite ones, so that an
           // unbounded problem comes back "optimal" at a huge vertex: the
@@ -726,9 +992,68 @@ namespace masonry
           options.setSolveType(ClpSolve::usePrimal);
           options.setPresolveType(ClpSolve::presolveOff);
           model->initialSolve(options);
-          solution.iterations += model->numberIterations();
+          iterations += model->numberIterations();
         }
+    }
 
+    void
+    Clp::read_optimum(const LinearProgram &lp,
+                      ClpSimplex          &model,
+                      const Interior      &interior,
+                      ClpBasis            *basis_out,
+                      Solution            &solution) const
+    {
+      const unsigned int n = lp.n_columns(), m = lp.n_rows();
+      solution.status = Status::optimal;
+      solution.x.assign(model.primalColumnSolution(),
+                        model.primalColumnSolution() + n);
+      // Clp's row duals are d(c^T x)/d(row bound) for either sense
+      // (with the objective as given, not as minimised internally): our
+      // convention already
+      solution.row_duals.assign(model.dualRowSolution(),
+                                model.dualRowSolution() + m);
+      solution.objective = lp.objective_value(solution.x);
+      solution.message   = "Clp: optimal";
+      if (!interior.x.empty())
+        solution.message += " (the barrier's point failed the check, " +
+                            interior.check.describe() + ": " + interior.then +
+                            ")";
+      solution.check   = check_pair(lp, solution.x, solution.row_duals);
+      solution.checked = true;
+      if (!solution.check.within(check_tolerance()))
+        resolve_unscaled(lp, model, check_tolerance(), solution);
+      if (basis_out)
+        {
+          basis_out->n_columns = n;
+          basis_out->n_rows    = m;
+          basis_out->status.assign(model.statusArray(),
+                                   model.statusArray() + n + m);
+        }
+    }
+
+    Solution
+    Clp::solve(const LinearProgram &lp,
+               const ClpBasis      *basis_in,
+               ClpBasis            *basis_out) const
+    {
+      const auto start_time = std::chrono::steady_clock::now();
+      Solution   solution;
+
+      Attempt attempt;
+      attempt.model  = create(lp);
+      attempt.method = algorithm;
+      if (basis_in)
+        solve_from_basis(lp, *basis_in, attempt, solution.iterations);
+      // `Crossover = never': not for a caller that keeps the basis (warm
+      // starts: minimum thickness)
+      const bool use_interior = no_crossover && !basis_out;
+      solve_cold(lp, use_interior, attempt, solution.iterations);
+      confirm(lp, attempt, solution.iterations);
+
+      const std::unique_ptr<ClpSimplex> &model = attempt.model;
+      const bool dual_infeasible               = attempt.dual_infeasible;
+      Verdict   &verdict                       = attempt.verdict;
+      Interior  &interior                      = attempt.interior;
       if (verdict.outcome == Verdict::Outcome::infeasible)
         {
           solution.status     = Status::infeasible;
@@ -741,7 +1066,7 @@ namespace masonry
           solution.message = "Clp: unbounded (" + verdict.description + ")";
           solution.ray     = std::move(verdict.ray);
         }
-      else if (kept_interior)
+      else if (attempt.kept_interior)
         {
           const PairCheck &c = interior.check;
           solution.status    = Status::optimal;
@@ -754,67 +1079,7 @@ namespace masonry
           solution.checked = true;
         }
       else if (!dual_infeasible && model->isProvenOptimal())
-        {
-          const unsigned int n = lp.n_columns(), m = lp.n_rows();
-          solution.status = Status::optimal;
-          solution.x.assign(model->primalColumnSolution(),
-                            model->primalColumnSolution() + n);
-          // Clp's row duals are d(c^T x)/d(row bound) for either sense
-          // (with the objective as given, not as minimised internally): our
-          // convention already
-          solution.row_duals.assign(model->dualRowSolution(),
-                                    model->dualRowSolution() + m);
-          solution.objective = lp.objective_value(solution.x);
-          solution.message   = "Clp: optimal";
-          if (!interior.x.empty())
-            solution.message += " (the barrier's point failed the check, " +
-                                interior.check.describe() + ": " +
-                                interior.then + ")";
-          solution.check   = check_pair(lp, solution.x, solution.row_duals);
-          solution.checked = true;
-          if (!solution.check.within(check_tolerance()))
-            {
-              // a vertex optimal only within Clp's tolerances on its scaled
-              // problem: the primal simplex from its basis on the unscaled
-              // one, kept if it checks out better
-              const std::string first = solution.check.describe();
-              model->scaling(0);
-              model->primal(1);
-              solution.iterations += model->numberIterations();
-              if (model->isProvenOptimal())
-                {
-                  std::vector<double> x(model->primalColumnSolution(),
-                                        model->primalColumnSolution() + n),
-                    y(model->dualRowSolution(), model->dualRowSolution() + m);
-                  const PairCheck again = check_pair(lp, x, y);
-                  const auto      worst = [](const PairCheck &c) {
-                    return std::max(
-                      {c.primal_residual, c.dual_residual, c.relative_gap()});
-                  };
-                  if (worst(again) < worst(solution.check))
-                    {
-                      solution.x         = std::move(x);
-                      solution.row_duals = std::move(y);
-                      solution.objective = lp.objective_value(solution.x);
-                      solution.check     = again;
-                    }
-                }
-              solution.message +=
-                " (failed the check, " + first +
-                (solution.check.within(check_tolerance()) ?
-                   std::string("; solved again by the primal simplex on the "
-                               "unscaled problem)") :
-                   "; still failing after a re-solve: " +
-                     solution.check.describe() + ")");
-            }
-          if (basis_out)
-            {
-              basis_out->n_columns = n;
-              basis_out->n_rows    = m;
-              basis_out->status.assign(model->statusArray(),
-                                       model->statusArray() + n + m);
-            }
-        }
+        read_optimum(lp, *model, interior, basis_out, solution);
       else if (!dual_infeasible && model->isProvenPrimalInfeasible())
         {
           solution.status  = Status::infeasible;
@@ -822,53 +1087,10 @@ namespace masonry
         }
       else if (dual_infeasible || model->isProvenDualInfeasible())
         {
-          // dual infeasible: unbounded if primal feasible, which x = 0
-          // shows when every bound allows it (a mechanism LP with fixed
-          // supports), else phase 1 by the barrier (decide_verdict()) or,
-          // if that is undecided, a solve with zero objective decides
-          Verdict phase_1;
-          if (zero_is_feasible(lp))
-            phase_1.outcome = Verdict::Outcome::unbounded;
-          else
-            {
-              auto pristine = create(lp);
-              phase_1 =
-                decide_verdict(lp, *pristine, false, true, time_limit());
-              solution.iterations += phase_1.iterations;
-            }
-          if (phase_1.outcome == Verdict::Outcome::undecided)
-            {
-              auto feasibility = create(lp);
-              for (unsigned int j = 0; j < lp.n_columns(); ++j)
-                feasibility->setObjectiveCoefficient(j, 0.);
-              feasibility->primal();
-              solution.iterations += feasibility->numberIterations();
-              if (feasibility->isProvenOptimal())
-                phase_1.outcome = Verdict::Outcome::unbounded;
-              else if (feasibility->isProvenPrimalInfeasible())
-                phase_1.outcome = Verdict::Outcome::infeasible;
-            }
-          if (phase_1.outcome == Verdict::Outcome::unbounded)
-            {
-              solution.status = Status::unbounded;
-              solution.message =
-                "Clp: unbounded (dual infeasible" +
-                (phase_1.description.empty() ? std::string() :
-                                               ", " + phase_1.description) +
-                ")";
-            }
-          else if (phase_1.outcome == Verdict::Outcome::infeasible)
-            {
-              solution.status  = Status::infeasible;
-              solution.message = "Clp: primal and dual infeasible" +
-                                 (phase_1.description.empty() ?
-                                    std::string() :
-                                    " (" + phase_1.description + ")");
-              solution.row_misfit = std::move(phase_1.row_misfit);
-            }
-          else
-            solution.message = "Clp: dual infeasible, primal feasibility "
-                               "undecided";
+          Verdict phase_1 = verdict_when_dual_infeasible(
+            lp, [&]() { return create(lp); }, time_limit());
+          solution.iterations += phase_1.iterations;
+          report_dual_infeasible(std::move(phase_1), solution);
         }
       else if (model->hitMaximumIterations())
         solution.message = "Clp: stopped on the time or iteration limit";

@@ -3,8 +3,9 @@
  * The `clp` back-end's verdicts on an LP without an optimum: two bounded
  * auxiliary LPs, each solved by the barrier on Clp's explicit dual, tell
  * an infeasible from an unbounded LP in about the time of an optimal
- * solve; and a rule that stops a barrier whose iterates diverge. Private
- * to the `clp` back-end.
+ * solve; the verdict on an LP without a dual feasible point; and a rule
+ * that stops a barrier whose iterates diverge. Private to the `clp`
+ * back-end.
  */
 #ifndef masonry_lp_clp_verdict_h
 #define masonry_lp_clp_verdict_h
@@ -12,6 +13,7 @@
 #include <masonry/lp/linear_program.h>
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -109,6 +111,25 @@ namespace masonry
      */
     std::function<bool(const ClpInterior &)>
     divergence_rule(const double scale);
+
+    /** Whether x = 0 satisfies every row and column bound of @p lp. */
+    bool
+    zero_is_feasible(const LinearProgram &lp);
+
+    /**
+     * The verdict on @p lp once it is known to have no dual feasible point
+     * (it is unbounded if it is feasible, else infeasible): unbounded if
+     * x = 0 is feasible; else phase 1 of decide_verdict() on a model from
+     * @p create (a fresh Clp model of @p lp), and if that is undecided, a
+     * primal simplex with zero objective on another. Verdict::iterations
+     * counts the iterations of all these solves; the outcome stays
+     * `undecided` if none decided.
+     */
+    Verdict
+    verdict_when_dual_infeasible(
+      const LinearProgram                                &lp,
+      const std::function<std::unique_ptr<ClpSimplex>()> &create,
+      const double                                        time_limit);
   } // namespace lp
 } // namespace masonry
 

@@ -258,6 +258,169 @@ namespace masonry
           << ")";
         return s.str();
       }
+
+      /**
+       * The ground's displacement (m) by @p u0 at the point @p c of the
+       * support interface @p i (zero without a support motion).
+       */
+      Vector3
+      ground_motion(const SupportMotion &u0,
+                    const Interface     &i,
+                    const ContactPoint  &c)
+      {
+        return u0 ? to_eigen(u0(c.position, i.support_label)) :
+                    Vector3(Vector3::Zero());
+      }
+
+      /** Block @p b of @p model (its patch and centroid) into @p x. */
+      void
+      describe_block(Incompatibility   &x,
+                     const BlockModel  &model,
+                     const unsigned int b)
+      {
+        const auto &blocks  = model.blocks();
+        const auto &patches = model.geometry().patches();
+        x.block             = b;
+        x.patch             = patches[blocks[b].patch].name();
+        x.centroid          = blocks[b].centroid;
+      }
+
+      /**
+       * Step 2 of check_support_motion(), the fit: per group of blocks,
+       * its exactly prescribed support components (@p rows_of, at the
+       * points @p points_of) fitted by one rigid motion. A group whose
+       * largest misfit (m) exceeds @p tolerance counts in
+       * @p support_worst, which keeps the worst; a group fitted within it
+       * with full rank gets its motion in @p fixed_motion. The counts and
+       * the largest misfit go to @p check.
+       */
+      void
+      fit_support_groups(
+        const BlockModel                                  &model,
+        const std::map<unsigned int, std::vector<FitRow>> &rows_of,
+        const std::map<unsigned int,
+                       std::vector<std::pair<unsigned int, unsigned int>>>
+                                            &points_of,
+        const double                         tolerance,
+        SupportCheck                        &check,
+        Incompatibility                     &support_worst,
+        std::map<unsigned int, RigidMotion> &fixed_motion)
+      {
+        const auto  &interfaces = model.interfaces();
+        const double length     = model.length_scale();
+        for (const auto &[g, rows] : rows_of)
+          {
+            ++check.n_supported_groups;
+            const Fit           fit = fit_rigid_motion(rows, length);
+            const auto         &pts = points_of.at(g);
+            std::vector<double> misfit(pts.size(), 0.);
+            for (unsigned int r = 0; r < rows.size(); ++r)
+              misfit[rows[r].point] += fit.residual[r] * fit.residual[r];
+            double       sum = 0, largest = 0;
+            unsigned int worst = 0;
+            for (unsigned int p = 0; p < pts.size(); ++p)
+              {
+                sum += misfit[p];
+                misfit[p] = std::sqrt(misfit[p]);
+                if (misfit[p] > largest)
+                  {
+                    largest = misfit[p];
+                    worst   = p;
+                  }
+              }
+            check.largest_misfit = std::max(check.largest_misfit, largest);
+            if (largest > tolerance)
+              {
+                ++support_worst.n_found;
+                if (largest > support_worst.misfit)
+                  {
+                    const auto &i               = interfaces[pts[worst].first];
+                    support_worst.kind          = "support";
+                    support_worst.support_label = i.support_label;
+                    describe_block(support_worst, model, i.first);
+                    support_worst.position =
+                      i.points[pts[worst].second].position;
+                    support_worst.misfit     = largest;
+                    support_worst.rms_misfit = std::sqrt(sum / pts.size());
+                  }
+              }
+            else if (fit.rank == 6)
+              {
+                fixed_motion[g] = fit.motion;
+                ++check.n_fixed_groups;
+              }
+          }
+      }
+
+      /**
+       * Step 3 of check_support_motion(): the jumps between groups of
+       * blocks of fixed motion (@p fixed_motion, by group of @p groups),
+       * and at unilateral supports of such a group (ground motion @p u0,
+       * not if @p bonded), measured by their distance (m) from the
+       * @p cone of admissible jumps. Returns the worst joint beyond
+       * @p tolerance (kind `joint`) and how many there are (n_found).
+       */
+      Incompatibility
+      inadmissible_jumps(
+        const BlockModel                          &model,
+        const JumpCone                            &cone,
+        Groups                                    &groups,
+        const std::map<unsigned int, RigidMotion> &fixed_motion,
+        const SupportMotion                       &u0,
+        const bool                                 bonded,
+        const double                               tolerance)
+      {
+        const auto     &interfaces = model.interfaces();
+        Incompatibility joint_worst;
+        for (const auto &i : interfaces)
+          {
+            const bool support = i.second == Interface::support;
+            if (support && bonded)
+              continue;
+            const auto a = fixed_motion.find(groups.find(i.first));
+            if (a == fixed_motion.end())
+              continue;
+            const unsigned int gb =
+              support ? Interface::support : groups.find(i.second);
+            if (!support && gb == groups.find(i.first))
+              continue;
+            const auto b = support ? fixed_motion.end() : fixed_motion.find(gb);
+            if (!support && b == fixed_motion.end())
+              continue;
+            double       largest = 0, sum = 0;
+            unsigned int worst = 0;
+            for (unsigned int p = 0; p < i.points.size(); ++p)
+              {
+                const auto   &c = i.points[p];
+                const Vector3 x = to_eigen(c.position);
+                const Vector3 jump =
+                  (support ? ground_motion(u0, i, c) : b->second.at(x)) -
+                  a->second.at(x);
+                const double d = cone.distance(frame(c) * jump);
+                sum += d * d;
+                if (d > largest)
+                  {
+                    largest = d;
+                    worst   = p;
+                  }
+              }
+            if (largest > tolerance)
+              {
+                ++joint_worst.n_found;
+                if (largest > joint_worst.misfit)
+                  {
+                    joint_worst.kind          = "joint";
+                    joint_worst.support_label = i.support_label;
+                    joint_worst.other_block   = i.second;
+                    describe_block(joint_worst, model, i.first);
+                    joint_worst.position   = i.points[worst].position;
+                    joint_worst.misfit     = largest;
+                    joint_worst.rms_misfit = std::sqrt(sum / i.points.size());
+                  }
+              }
+          }
+        return joint_worst;
+      }
     } // namespace
 
     std::string
@@ -313,12 +476,7 @@ namespace masonry
       const auto        &interfaces = model.interfaces();
       const double       length     = model.length_scale();
       const unsigned int n_blocks   = blocks.size();
-      const auto        &patches    = model.geometry().patches();
       check.exact                   = cone.everything;
-      const auto ground = [&](const Interface &i, const ContactPoint &c) {
-        return u0 ? to_eigen(u0(c.position, i.support_label)) :
-                    Vector3(Vector3::Zero());
-      };
 
       // 1. groups of blocks joined by rigid interfaces: the fixed
       // components at their points determine the relative motion
@@ -354,7 +512,7 @@ namespace masonry
             {
               const auto           &c = i.points[p];
               const Eigen::Matrix3d f = frame(c);
-              const Vector3         u = ground(i, c);
+              const Vector3         u = ground_motion(u0, i, c);
               std::vector<Vector3>  directions;
               if (bonded)
                 directions = {f.row(0).transpose(),
@@ -375,102 +533,19 @@ namespace masonry
         }
       std::map<unsigned int, RigidMotion> fixed_motion;
       Incompatibility                     support_worst, joint_worst;
-      const auto describe_block = [&](Incompatibility &x, const unsigned b) {
-        x.block    = b;
-        x.patch    = patches[blocks[b].patch].name();
-        x.centroid = blocks[b].centroid;
-      };
-      for (const auto &[g, rows] : rows_of)
-        {
-          ++check.n_supported_groups;
-          const Fit           fit = fit_rigid_motion(rows, length);
-          const auto         &pts = points_of[g];
-          std::vector<double> misfit(pts.size(), 0.);
-          for (unsigned int r = 0; r < rows.size(); ++r)
-            misfit[rows[r].point] += fit.residual[r] * fit.residual[r];
-          double       sum = 0, largest = 0;
-          unsigned int worst = 0;
-          for (unsigned int p = 0; p < pts.size(); ++p)
-            {
-              sum += misfit[p];
-              misfit[p] = std::sqrt(misfit[p]);
-              if (misfit[p] > largest)
-                {
-                  largest = misfit[p];
-                  worst   = p;
-                }
-            }
-          check.largest_misfit = std::max(check.largest_misfit, largest);
-          if (largest > tolerance)
-            {
-              ++support_worst.n_found;
-              if (largest > support_worst.misfit)
-                {
-                  const auto &i               = interfaces[pts[worst].first];
-                  support_worst.kind          = "support";
-                  support_worst.support_label = i.support_label;
-                  describe_block(support_worst, i.first);
-                  support_worst.position = i.points[pts[worst].second].position;
-                  support_worst.misfit   = largest;
-                  support_worst.rms_misfit = std::sqrt(sum / pts.size());
-                }
-            }
-          else if (fit.rank == 6)
-            {
-              fixed_motion[g] = fit.motion;
-              ++check.n_fixed_groups;
-            }
-        }
+      fit_support_groups(model,
+                         rows_of,
+                         points_of,
+                         tolerance,
+                         check,
+                         support_worst,
+                         fixed_motion);
 
       // 3. the jumps between groups of fixed motion, and at unilateral
       // supports of such a group, must be admissible
       if (!cone.everything)
-        for (const auto &i : interfaces)
-          {
-            const bool support = i.second == Interface::support;
-            if (support && bonded)
-              continue;
-            const auto a = fixed_motion.find(groups.find(i.first));
-            if (a == fixed_motion.end())
-              continue;
-            const unsigned int gb =
-              support ? Interface::support : groups.find(i.second);
-            if (!support && gb == groups.find(i.first))
-              continue;
-            const auto b = support ? fixed_motion.end() : fixed_motion.find(gb);
-            if (!support && b == fixed_motion.end())
-              continue;
-            double       largest = 0, sum = 0;
-            unsigned int worst = 0;
-            for (unsigned int p = 0; p < i.points.size(); ++p)
-              {
-                const auto   &c = i.points[p];
-                const Vector3 x = to_eigen(c.position);
-                const Vector3 jump =
-                  (support ? ground(i, c) : b->second.at(x)) - a->second.at(x);
-                const double d = cone.distance(frame(c) * jump);
-                sum += d * d;
-                if (d > largest)
-                  {
-                    largest = d;
-                    worst   = p;
-                  }
-              }
-            if (largest > tolerance)
-              {
-                ++joint_worst.n_found;
-                if (largest > joint_worst.misfit)
-                  {
-                    joint_worst.kind          = "joint";
-                    joint_worst.support_label = i.support_label;
-                    joint_worst.other_block   = i.second;
-                    describe_block(joint_worst, i.first);
-                    joint_worst.position   = i.points[worst].position;
-                    joint_worst.misfit     = largest;
-                    joint_worst.rms_misfit = std::sqrt(sum / i.points.size());
-                  }
-              }
-          }
+        joint_worst = inadmissible_jumps(
+          model, cone, groups, fixed_motion, u0, bonded, tolerance);
       // a support motion that is no rigid motion is the cause; a joint
       // that would have to close follows from the fitted motions
       if (support_worst.n_found > 0)

@@ -295,6 +295,14 @@ namespace masonry
       adapt(RunContext &context);
 
       /**
+       * After adapt()'s evaluations: the state of the final analysis, on
+       * the mesh of @p genes, with screen output, its timings and counts
+       * from zero, and without the other threads' copies.
+       */
+      void
+      finish_adaptation(const std::vector<double> &genes);
+
+      /**
        * `Optimiser = crack refinement` (source/adaptation/
        * crack_refinement.cc): from the uniform mesh, `Stages` times solve
        * (evaluate_cracks()) and split the parameter strips where the

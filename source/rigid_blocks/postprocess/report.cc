@@ -119,101 +119,19 @@ namespace masonry
           bool               first = true;
         };
 
-      } // namespace
 
-      /**
-       * report.html: one self-contained page of the run (write_report_page()):
-       * the deformed blocks in 3D, coloured by displacement magnitude, with
-       * an amplification slider; the cracks coloured by opening and the
-       * hinges marked; the supports and the prescribed motion of the
-       * settling ones; the crack map on the developed intrados; the
-       * convergence of an adaptation; the key numbers, the crack list, the
-       * support reactions and every entry of the summary as it is when
-       * the report is written (the same numbers as summary.json). Written
-       * also for a run without an optimum: the status, its explanation and
-       * diagnostics on the blocks at rest.
-       */
-      class Report : public Interface
-      {
-      public:
-        static void
-        declare_parameters(dealii::ParameterHandler &)
-        {}
-
-        std::vector<std::string>
-        required_plugins() const override
-        {
-          return {"cracks", "support reactions"};
-        }
-
-        bool
-        writes_without_solution() const override
-        {
-          return true;
-        }
-
+        /**
+         * The blocks into @p d: intrados and extrados grids of
+         * (k+1)^2 points per block (k = `subdivisions`), the triangles of
+         * their faces and sides, the edges as polylines, and the
+         * displacement (m) of every point.
+         */
         void
-        execute(const Result &result, RunContext &context) override
-        {
-          if (!result.is_root())
-            return;
-          const auto  start = std::chrono::steady_clock::now();
-          std::string data;
-          try
-            {
-              data = page_data(result, context);
-            }
-          catch (const std::exception &e)
-            {
-              context.pcout << "Note: report.html not written (" << e.what()
-                            << ")\n";
-              return;
-            }
-          const std::string title =
-            "masonry: " + context.summary.at("analysis").get<std::string>() +
-            " — " + context.summary.at("parameter_file").get<std::string>();
-          const std::string path = context.output.path() + "report.html";
-          const std::string why =
-            write_report_page(path, title, "rigid_blocks", data);
-          if (why.empty())
-            context.output.file("report.html");
-          else
-            context.pcout << "Note: report.html not written (" << why << ")\n";
-          context.summary["seconds_report"] =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() -
-                                          start)
-              .count();
-        }
-
-      private:
-        /** The JSON the page's script draws. */
-        static std::string
-        page_data(const Result &result, RunContext &context)
+        write_blocks(DataText &d, const Result &result)
         {
           const BlockModel &model  = result.model();
           const auto       &blocks = model.blocks();
           const auto       &motion = result.motion();
-          DataText          d;
-          d.open('{');
-          // the summary as it is now, without the entries the driver
-          // completes after the outputs (times, file list, completeness)
-          Json summary = context.summary;
-          for (const char *later : {"complete",
-                                    "wall_seconds",
-                                    "cpu_seconds",
-                                    "files",
-                                    "seconds_output",
-                                    "seconds_picture",
-                                    "seconds_report"})
-            summary.erase(later);
-          d.key("summary").raw(summary.dump(0));
-          d.key("has_solution").raw(result.has_solution() ? "true" : "false");
-          d.key("amplification").number(result.amplification());
-          d.key("tolerance").number(result.tolerance());
-          d.key("length_scale").number(model.length_scale());
-          const dealii::Tensor<1, 2> view = result.view_direction();
-          d.key("view").open('[').number(view[0]).number(view[1]).close(']');
-
           // the blocks: intrados and extrados grids of (k+1)^2 points, the
           // sides between their boundaries; displacement per point
           const unsigned int k = result.options().subdivisions;
@@ -319,10 +237,22 @@ namespace masonry
             d.close(']');
             d.close('}');
           }
+        }
 
+        /**
+         * Every interface of @p result's model into @p d: its state, its
+         * segment on the crack @p map, and for a crack or a support the
+         * points, both sides' displacements (m) and the openings (m).
+         */
+        void
+        write_interfaces(DataText               &d,
+                         const Result           &result,
+                         const DevelopedSurface &map)
+        {
+          const BlockModel &model  = result.model();
+          const auto       &motion = result.motion();
           // every interface: its state and its place on the crack map; the
           // points and both sides' displacements of those that crack
-          const DevelopedSurface map(model);
           d.key("interfaces").open('[');
           for (unsigned int c = 0; c < model.interfaces().size(); ++c)
             {
@@ -379,7 +309,14 @@ namespace masonry
               d.close('}');
             }
           d.close(']');
+        }
 
+        /** The outlines and names of @p model's patches on @p map into @p d. */
+        void
+        write_patches(DataText               &d,
+                      const BlockModel       &model,
+                      const DevelopedSurface &map)
+        {
           // the patches' outlines and names on the map
           const auto &patches = model.geometry().patches();
           d.key("patches").open('[');
@@ -401,7 +338,15 @@ namespace masonry
               d.close('}');
             }
           d.close(']');
+        }
 
+        /**
+         * The rows of adaptation.csv (one per generation) into @p d, when
+         * an optimiser adapted the mesh and wrote that file.
+         */
+        void
+        write_generations(DataText &d, const RunContext &context)
+        {
           // the convergence of an adaptation by an optimiser
           if (context.summary.contains("adaptation"))
             {
@@ -426,6 +371,108 @@ namespace masonry
                   d.close(']');
                 }
             }
+        }
+      } // namespace
+
+      /**
+       * report.html: one self-contained page of the run (write_report_page()):
+       * the deformed blocks in 3D, coloured by displacement magnitude, with
+       * an amplification slider; the cracks coloured by opening and the
+       * hinges marked; the supports and the prescribed motion of the
+       * settling ones; the crack map on the developed intrados; the
+       * convergence of an adaptation; the key numbers, the crack list, the
+       * support reactions and every entry of the summary as it is when
+       * the report is written (the same numbers as summary.json). Written
+       * also for a run without an optimum: the status, its explanation and
+       * diagnostics on the blocks at rest.
+       */
+      class Report : public Interface
+      {
+      public:
+        static void
+        declare_parameters(dealii::ParameterHandler &)
+        {}
+
+        std::vector<std::string>
+        required_plugins() const override
+        {
+          return {"cracks", "support reactions"};
+        }
+
+        bool
+        writes_without_solution() const override
+        {
+          return true;
+        }
+
+        void
+        execute(const Result &result, RunContext &context) override
+        {
+          if (!result.is_root())
+            return;
+          const auto  start = std::chrono::steady_clock::now();
+          std::string data;
+          try
+            {
+              data = page_data(result, context);
+            }
+          catch (const std::exception &e)
+            {
+              context.pcout << "Note: report.html not written (" << e.what()
+                            << ")\n";
+              return;
+            }
+          const std::string title =
+            "masonry: " + context.summary.at("analysis").get<std::string>() +
+            " — " + context.summary.at("parameter_file").get<std::string>();
+          const std::string path = context.output.path() + "report.html";
+          const std::string why =
+            write_report_page(path, title, "rigid_blocks", data);
+          if (why.empty())
+            context.output.file("report.html");
+          else
+            context.pcout << "Note: report.html not written (" << why << ")\n";
+          context.summary["seconds_report"] =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                          start)
+              .count();
+        }
+
+      private:
+        /** The JSON the page's script draws. */
+        static std::string
+        page_data(const Result &result, RunContext &context)
+        {
+          const BlockModel &model = result.model();
+          DataText          d;
+          d.open('{');
+          // the summary as it is now, without the entries the driver
+          // completes after the outputs (times, file list, completeness)
+          Json summary = context.summary;
+          for (const char *later : {"complete",
+                                    "wall_seconds",
+                                    "cpu_seconds",
+                                    "files",
+                                    "seconds_output",
+                                    "seconds_picture",
+                                    "seconds_report"})
+            summary.erase(later);
+          d.key("summary").raw(summary.dump(0));
+          d.key("has_solution").raw(result.has_solution() ? "true" : "false");
+          d.key("amplification").number(result.amplification());
+          d.key("tolerance").number(result.tolerance());
+          d.key("length_scale").number(model.length_scale());
+          const dealii::Tensor<1, 2> view = result.view_direction();
+          d.key("view").open('[').number(view[0]).number(view[1]).close(']');
+
+          write_blocks(d, result);
+
+          const DevelopedSurface map(model);
+          write_interfaces(d, result, map);
+
+          write_patches(d, model, map);
+
+          write_generations(d, context);
           d.close('}');
           return d.str();
         }
