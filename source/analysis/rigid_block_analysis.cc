@@ -118,14 +118,15 @@ namespace masonry
                         "middle surface, Pa (N/m², positive downwards), as "
                         "a function of x, y, z; e.g. a roof resting on the "
                         "vault.");
-      prm.declare_entry("Displacement amplification",
-                        "0",
-                        dealii::Patterns::Double(0),
-                        "Factor on displacements in the deformed VTU and "
-                        "picture (dimensionless); 0 chooses one that makes "
-                        "the larger of the largest block displacement and "
-                        "the largest support motion 5 % of the vault's "
-                        "size.");
+      declare_ranged_entry(prm,
+                           "Displacement amplification",
+                           "0",
+                           {0, 1e6, "(dimensionless)"},
+                           "Factor on displacements in the deformed VTU and "
+                           "picture (dimensionless); 0 chooses one that makes "
+                           "the larger of the largest block displacement and "
+                           "the largest support motion 5 % of the vault's "
+                           "size.");
       prm.declare_entry("Output subdivisions",
                         "4",
                         dealii::Patterns::Integer(1, 32),

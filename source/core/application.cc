@@ -376,11 +376,12 @@ namespace masonry
 
     /**
      * Why the results of a completed analysis are not usable (a non-finite
-     * result or CSV entry, a file that was not written), or "".
+     * CSV entry, a file that was not written, a log that could not be
+     * written), or "". (A non-finite entry of summary.json is found when the
+     * summary is written: non_finite_message().)
      */
     std::string
-    result_problem(const Json                            &summary,
-                   const OutputDirectory                 &output,
+    result_problem(const OutputDirectory                 &output,
                    const Log                             &log,
                    const std::filesystem::file_time_type &file_start)
     {
@@ -617,7 +618,7 @@ namespace masonry
       // every result must be finite and every file written
       std::string problem;
       if (root)
-        problem = result_problem(summary, output, log, file_start);
+        problem = result_problem(output, log, file_start);
       problem = dealii::Utilities::MPI::broadcast(comm, problem, 0);
       if (!problem.empty())
         fail("failed", problem);

@@ -140,10 +140,10 @@ namespace masonry
 
   /**
    * Give the numeric entries of the core's range table
-   * (core/parameter_ranges.cc: those not yet declared with
-   * declare_ranged_entry() by their plugin) that range as their pattern and
-   * in their documentation. Called after every plugin has declared its
-   * entries.
+   * (core/parameter_ranges.cc: the geometry models' lengths, which
+   * check_parameter_values() reads; every other plugin declares its ranges
+   * with declare_ranged_entry()) that range as their pattern and in their
+   * documentation. Called after every plugin has declared its entries.
    */
   void
   declare_parameter_ranges(dealii::ParameterHandler &prm);
