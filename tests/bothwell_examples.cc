@@ -18,9 +18,6 @@
  */
 #include <deal.II/base/mpi.h>
 
-#include <fstream>
-#include <sstream>
-
 #include "vault_tests.h"
 
 using namespace vault_tests;

@@ -24,7 +24,6 @@
  * The model's ratio must lie in that range: a gap that did nothing (ratio
  * 1) or that took more than its area (below a) fails.
  */
-#include <fstream>
 #include <iomanip>
 
 #include "brickwork_tests.h"

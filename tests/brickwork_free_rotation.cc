@@ -17,10 +17,11 @@
  *   strengths differ (`Strength scatter'), crack on one side first:
  *   the free platen tilts, its nodal forces have no resultant moment about
  *   the centre (the seat's equilibrium), the top face stays a plane whose
- *   centre sits at the applied displacement; under the fixed platen the same
- *   wall does carry a moment (so the moment check can fail), and its peak
- *   is not below the free platen's (the clamp holds the weak side open
- *   with the strong one).
+ *   centre sits at the applied displacement (these two are sanity checks
+ *   of the protocol's constraints, which impose them); under the fixed platen
+ * the same wall does carry a moment (so the moment check can fail), and its
+ * peak is not below the free platen's (the clamp holds the weak side open with
+ * the strong one).
  */
 #include <masonry/brickwork/postprocessor.h>
 #include <masonry/brickwork/protocol.h>
@@ -218,8 +219,9 @@ namespace
     double half_length = 0;
   } top_face;
 
-  /** Takes TopFace from the model at the end of the run (the test's own
-   * postprocessor reads the platen's nodes, private to the library). */
+  /** Takes TopFace from the model at the end of the run: the platen and
+   * the solution from the public view, the internal forces (the platen's
+   * nodal reactions) from the model's System, private to the library. */
   class TopFaceProbe : public postprocess::Postprocessor
   {
   public:
@@ -230,12 +232,12 @@ namespace
     void
     finish(const ModelView &view, masonry::Json &) override
     {
-      const auto &top = view.system.top;
-      const auto  u   = view.system.ghosted_copy();
-      const auto &f   = view.system.f_int;
-      const auto &c   = top.centre;
-      TopFace     t;
-      double      lo = 1e300, hi = -1e300;
+      const Platen &top = view.top_platen();
+      const auto    u   = view.solution();
+      const auto   &f   = view.system.f_int;
+      const auto   &c   = top.centre;
+      TopFace       t;
+      double        lo = 1e300, hi = -1e300;
       // least squares plane w = a + b (x - xc) + d (y - yc)
       dealii::FullMatrix<double> m(3, 3);
       dealii::Vector<double>     r(3), abd(3);

@@ -28,9 +28,6 @@
  */
 #include <deal.II/base/mpi.h>
 
-#include <fstream>
-#include <sstream>
-
 #include "vault_tests.h"
 
 using namespace vault_tests;
@@ -58,12 +55,9 @@ namespace
   std::string
   example(const std::string &name)
   {
-    std::ifstream in(std::string(MASONRY_SOURCE_DIR) + "/prm/examples/" + name +
-                     ".prm");
-    std::stringstream text;
-    text << in.rdbuf();
-    check(!text.str().empty(), name + " is read");
-    return text.str() +
+    const std::string text = example_text(name);
+    check(!text.empty(), name + " is read");
+    return text +
            "subsection Settlement\n  set Blocks along u = 12\n"
            "  set Blocks along v = 16\n  set Write picture = false\nend\n"
            "subsection Interface model\n" +

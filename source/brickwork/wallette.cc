@@ -31,8 +31,8 @@
 
 #include "assembly/regions.h"
 #include "curve_summary.h"
-#include "postprocess/view.h"
 #include "postprocess/report.h"
+#include "postprocess/view.h"
 #include "solution/bounds.h"
 #include "solution/stop_messages.h"
 

@@ -101,10 +101,11 @@ namespace masonry
     ranges()
     {
       // every other plugin declares its ranges with its entries
-      // (declare_ranged_entry()); the geometry's stay here because the
-      // checks below read them: the lengths size the box in which the
-      // function expressions are sampled, and a length below a millimetre is
-      // a degenerate model
+      // (declare_ranged_entry()); the geometry models' stay here together
+      // because the checks below read their lengths: they size the box in
+      // which the function expressions are sampled, and a length below a
+      // millimetre is a degenerate model (Density and Scale factor stay
+      // with them, not read by a check)
       std::vector<Range> list = {
         // geometry: negative values are let through to the plugins, which
         // explain what is wrong with them

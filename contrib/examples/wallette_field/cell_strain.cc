@@ -1,16 +1,15 @@
 /**
  * @file
  * A field output added to masonry's wallette analysis from outside: the
- * postprocessor `cell strain` writes, at every output step, one VTU file of
- * the wallette's cells with the strain averaged over each cell's eight
- * Gauss points (three normal components, -), the cell's region and whether
- * it has been deleted, and optionally the cell average of one state
- * variable of the brick material, chosen by name. It reads the run through
- * the public model view only: the mesh, the DoF handler and the solution as
- * deal.II objects, the cells' regions and deletions, the point states by
- * name. Start a field output of your own from here.
+ * postprocessor `cell strain` writes, at every output step, a VTU file set
+ * (one piece per MPI rank and a .pvtu record) of the wallette's cells with the
+ * strain averaged over each cell's eight Gauss points (three normal components,
+ * -), the cell's region and whether it has been deleted, and optionally the
+ * cell average of one state variable of the brick material, chosen by name. It
+ * reads the run through the public model view only: the mesh, the DoF handler
+ * and the solution as deal.II objects, the cells' regions and deletions, the
+ * point states by name. Start a field output of your own from here.
  */
-#include <masonry/brickwork/brick_material.h>
 #include <masonry/brickwork/postprocessor.h>
 #include <masonry/core/output_directory.h>
 #include <masonry/core/parameters.h>
@@ -23,7 +22,6 @@
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/data_out.h>
 
-#include <cstdio>
 #include <stdexcept>
 
 namespace
@@ -39,7 +37,8 @@ namespace
       prm.declare_entry("File prefix",
                         "cell_strain",
                         dealii::Patterns::FileName(),
-                        "The files, in the output directory: PREFIX_NNNN.vtu, "
+                        "The files, in the output directory: PREFIX_NNNN.pvtu "
+                        "and its pieces PREFIX_NNNN.R.vtu (R the MPI rank), "
                         "NNNN the step.");
       prm.declare_entry(
         "State variable",
@@ -115,10 +114,19 @@ namespace
       if (with_state)
         data_out.add_data_vector(state, variable);
       data_out.build_patches();
-      char number[16];
-      std::snprintf(number, sizeof(number), "_%04u.vtu", step);
-      data_out.write_vtu_in_parallel(view.context.output.file(prefix + number),
-                                     view.context.mpi_communicator);
+      // each rank writes its own cells (PREFIX_NNNN.R.vtu), rank 0 the
+      // record PREFIX_NNNN.pvtu that ParaView opens; the files are named in
+      // summary.json
+      const MPI_Comm    comm = view.context.mpi_communicator;
+      const std::string pvtu = data_out.write_vtu_with_pvtu_record(
+        view.context.output.path(), prefix, step, comm, 4);
+      const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+      view.context.output.file(pvtu);
+      for (unsigned int r = 0; r < n_ranks; ++r)
+        view.context.output.file(
+          prefix + "_" + Utilities::int_to_string(step, 4) + "." +
+          Utilities::int_to_string(r, Utilities::needed_digits(n_ranks - 1)) +
+          ".vtu");
     }
 
   private:
@@ -151,7 +159,7 @@ namespace
 MASONRY_REGISTER_WALLETTE_POSTPROCESSOR(
   CellStrain,
   "cell strain",
-  "PREFIX_NNNN.vtu (`File prefix') at every output step: the cells' strain "
+  "PREFIX_NNNN.pvtu (`File prefix') at every output step: the cells' strain "
   "averaged over their Gauss points (xx, yy, zz, -), region (0 unit, 1 "
   "mortar), deleted (0/1) and, with `State variable', the cell average of "
   "that state variable of the brick material.")

@@ -23,6 +23,8 @@
 #include <string>
 #include <vector>
 
+// the deal.II 9.4 declarations of these classes (a deal.II with C++20
+// constraints on them needs its own headers here instead)
 namespace dealii
 {
   template <int rank, int dim, typename Number>
@@ -64,7 +66,9 @@ namespace masonry
     /** What a postprocessor may read of a wallette run. */
     struct ModelView
     {
-      /** The settings of the run (`subsection Wallette'). */
+      /** The settings of the run (`subsection Wallette'; a private type:
+       * an output reads them through output_settings(), deletes_cells(),
+       * fades_cells(), has_regions() and top_platen()). */
       const WalletteSettings &settings;
       /** The output directory, the MPI communicator, summary.json. */
       RunContext &context;
@@ -85,8 +89,8 @@ namespace masonry
       const model::Joints &joints;
 
       /** @name The parts of the model (private headers in
-       * source/brickwork/specimen, assembly and solution: for the built-in
-       * postprocessors; a plugin uses the functions below) */
+       * source/brickwork/specimen, assembly and solution: for the model's
+       * own report and for tests; an output uses the functions below) */
       /** @{ */
       const model::Geometry         &geometry;
       const model::System           &system;
@@ -141,7 +145,8 @@ namespace masonry
        * Number of points of the splitting interfaces (4 per face pair n of
        * type model::splitting_type: 4 n + q, numbered as the joint points;
        * 0 without splitting interfaces) and their converged states, in the
-       * layout of splitting_law's state_variables().
+       * layout of splitting_law's state_variables(). Only the points of
+       * the face pairs this process owns are current.
        */
       unsigned int
       n_splitting_points() const;
@@ -167,7 +172,8 @@ namespace masonry
       dof_handler() const;
       /** The converged displacements (m) of the present step, with every
        * entry this rank's cells need (a ghosted copy: DataOut, FEValues'
-       * get_function_values and similar read it directly). */
+       * get_function_values and similar read it directly). Collective:
+       * call it on every rank. */
       dealii::TrilinosWrappers::MPI::Vector
       solution() const;
       /** @} */

@@ -140,7 +140,7 @@ namespace masonry
 
   /**
    * Give the numeric entries of the core's range table
-   * (core/parameter_ranges.cc: the geometry models' lengths, which
+   * (core/parameter_ranges.cc: the geometry models' entries, whose lengths
    * check_parameter_values() reads; every other plugin declares its ranges
    * with declare_ranged_entry()) that range as their pattern and in their
    * documentation. Called after every plugin has declared its entries.

@@ -3,7 +3,7 @@
  * The complete types of the parts of the model that the public ModelView
  * (include/masonry/brickwork/view.h) only declares: for the view's own
  * functions (view.cc), the model's report (report.cc) and the step loop.
- * The outputs do not include it.
+ * The registered outputs do not include it (tests may).
  */
 #ifndef masonry_brickwork_model_view_h
 #define masonry_brickwork_model_view_h
