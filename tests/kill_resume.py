@@ -5,7 +5,15 @@
 there); a run sent SIGTERM stops at its next step with a checkpoint and
 status `interrupted', and resumes to the same curve.
 
-Usage: kill_resume.py MASONRY WORK_DIR EXAMPLE_PRM SHORT_PRM
+Usage: kill_resume.py MASONRY WORK_DIR EXAMPLE_PRM SHORT_PRM [TERM_TOLERANCE]
+
+With `Newton chord across steps' (kill_resume_chord) a run stopped by a
+signal off the checkpoint interval loses the factorisation that its next
+step's chord corrections would have used, so (as the entry documents) the
+resumed run equals the uninterrupted one to the Newton tolerance, not to
+round-off, and a step may take one Newton iteration more: TERM_TOLERANCE is
+then the relative tolerance of that comparison, without the Newton
+iteration counts.
 
 The example is cut down to a short cyclic run by SHORT_PRM (a coarse
 simplified wallette, three amplitudes, a checkpoint every step, fields
@@ -24,6 +32,7 @@ import time
 import xml.etree.ElementTree as ET
 
 masonry, work, example, short = sys.argv[1:5]
+term_tolerance = float(sys.argv[5]) if len(sys.argv) > 5 else None
 shutil.rmtree(work, ignore_errors=True)
 os.makedirs(work)
 os.chdir(work)
@@ -110,19 +119,30 @@ print("uninterrupted run: %d steps, %d field outputs" % (n_steps, n_fields))
 failures = 0
 
 
-def compare(directory, label):
+def without_iterations(rows):
+    """curve.csv's rows without its newton_iterations column (the sixth)."""
+    return [row[:5] + row[6:] for row in rows]
+
+
+def compare(directory, label, tolerance=1e-12):
     global failures
-    d_curve = largest_difference(reference[0], table(directory + "/curve.csv"))
+    curve = table(directory + "/curve.csv")
+    reference_curve = reference[0]
+    if tolerance > 1e-12:
+        curve = without_iterations(curve)
+        reference_curve = without_iterations(reference_curve)
+    d_curve = largest_difference(reference_curve, curve)
     d_cycles = largest_difference(reference[1],
                                   table(directory + "/cycles.csv"))
     problems = series_problems(directory, "solution.pvd") + \
         series_problems(directory, "interfaces.pvd")
     summary = json.load(open(directory + "/summary.json"))
-    ok = d_curve <= 1e-12 and d_cycles <= 1e-12 and not problems and \
+    ok = d_curve <= tolerance and d_cycles <= tolerance and not problems and \
         summary.get("complete") is True
+    equal = "equal (%g)" % tolerance
     print("%s: curve %s, cycle table %s, field series %s, complete %s" % (
-        label, "equal (1e-12)" if d_curve <= 1e-12 else "differs (%g)" % d_curve,
-        "equal (1e-12)" if d_cycles <= 1e-12 else "differs (%g)" % d_cycles,
+        label, equal if d_curve <= tolerance else "differs (%g)" % d_curve,
+        equal if d_cycles <= tolerance else "differs (%g)" % d_cycles,
         "whole" if not problems else "; ".join(problems),
         summary.get("complete")))
     if not ok:
@@ -170,7 +190,7 @@ if not stopped:
     print(err)
 else:
     resumed = run(prm("resume.prm", "term", resume=True))
-    compare("term", "after SIGTERM, resumed")
+    compare("term", "after SIGTERM, resumed", term_tolerance or 1e-12)
 
 if failures:
     sys.exit("kill_resume: %d failure(s)" % failures)
