@@ -353,6 +353,29 @@ namespace masonry
              nu / E * dealii::trace(s) * dealii::unit_symmetric_tensor<3>();
     }
 
+    namespace
+    {
+      /** Whether every principal value of @p s is below @p bound (<= 0):
+       * whether s - bound I is negative definite, by Sylvester's criterion
+       * (the leading principal minors of bound I - s all positive). */
+      bool
+      all_principal_values_below(const SymmetricTensor<2, 3> &s,
+                                 const double                 bound)
+      {
+        const double a00 = bound - s[0][0], a11 = bound - s[1][1],
+                     a22 = bound - s[2][2];
+        const double a01 = -s[0][1], a02 = -s[0][2], a12 = -s[1][2];
+        if (a00 <= 0)
+          return false;
+        const double minor2 = a00 * a11 - a01 * a01;
+        if (minor2 <= 0)
+          return false;
+        return a00 * (a11 * a22 - a12 * a12) - a01 * (a01 * a22 - a12 * a02) +
+                 a02 * (a01 * a12 - a11 * a02) >
+               0;
+      }
+    } // namespace
+
     SymmetricTensor<2, 3>
     DamagePlasticityBrick::positive_part(const SymmetricTensor<2, 3> &s,
                                          SymmetricTensor<4, 3> *derivative,
@@ -374,14 +397,17 @@ namespace masonry
       auto slope = [&](const double x) {
         return x <= 0 ? 0. : x >= delta ? 1. : x * (4 - 3 * x / delta) / delta;
       };
-      // all three principal stresses clearly compressive (the eigenvalues
-      // in closed form, much cheaper than the eigenvectors): P = 0 and
-      // its derivative 0 exactly, as the sum below would give (h and its
-      // slope vanish at x <= 0; the margin keeps the sign of the largest
-      // eigenvalue beyond the round-off of either computation)
-      if (dealii::eigenvalues(s)[0] < -1e-6 * s.norm())
+      // all three principal stresses clearly compressive: P = 0 and its
+      // derivative 0 exactly, as the sum below would give (h and its slope
+      // vanish at x <= 0; the margin keeps the sign of the largest
+      // eigenvalue beyond the round-off of either computation). Told by
+      // the leading minors, without the eigenvalues, whose closed form
+      // (arccos, cos) cost more than the rest of this function
+      if (all_principal_values_below(s, -1e-6 * s.norm()))
         return P;
-      const auto eig = dealii::eigenvectors(s);
+      const auto eig =
+        dealii::eigenvectors(s,
+                             dealii::SymmetricTensorEigenvectorMethod::hybrid);
       if (largest)
         *largest = std::max(eig[0].first, 0.);
       SymmetricTensor<2, 3> M[3];
@@ -557,8 +583,10 @@ namespace masonry
       // to 0 (the trial lateral stresses of a point in uniaxial stress are
       // lambda dp < nu / (1 - nu) s1). Otherwise (multiaxial tension) N =
       // s+ / tau_t, the positive principal directions together
-      const SymmetricTensor<2, 3> s0  = plus + minus;
-      const auto                  eig = dealii::eigenvectors(s0);
+      const SymmetricTensor<2, 3> s0 = plus + minus;
+      const auto                  eig =
+        dealii::eigenvectors(s0,
+                             dealii::SymmetricTensorEigenvectorMethod::hybrid);
       const SymmetricTensor<2, 3> N =
         eig[1].first <= nu / (1 - nu) * eig[0].first ?
           SymmetricTensor<2, 3>(dealii::symmetrize(
