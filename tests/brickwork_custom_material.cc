@@ -17,6 +17,7 @@
 #include <cstdio>
 
 #include "brickwork_tests.h"
+#include "tests.h"
 
 namespace
 {
@@ -198,4 +199,19 @@ main(int argc, char **argv)
           contains(xdmf_times("results/resumed_hdf5/solution.xdmf"), all),
         "Output format = hdf5: solution.xdmf of the resumed run lists every "
         "output step of the uninterrupted run");
+  // the law has no IMPL-EX extrapolation (its extrapolates() is false):
+  // under `Damage integration = implex' the run stops before its first
+  // step with one line naming the entry, instead of running the implicit
+  // law without extrapolation or IMPL-EX's damage error
+  testing::write_file("implex.prm",
+                      "set Output directory = results/implex\n" +
+                        prm(wallette + "set Damage integration = implex\n",
+                            plugins));
+  const testing::Result refused = testing::run({"implex.prm"});
+  check(refused.exit_code != 0 && testing::n_lines(refused.err) == 1 &&
+          refused.err.rfind("masonry: error: ", 0) == 0 &&
+          refused.err.find("`Brick material/Model'") != std::string::npos &&
+          !std::ifstream("results/implex/curve.csv"),
+        "Damage integration = implex with a law that does not extrapolate: "
+        "a one-line error naming `Brick material/Model', no curve");
 }

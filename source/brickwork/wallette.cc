@@ -101,6 +101,10 @@ namespace masonry
          * the laws declare them). */
         void
         setup_point_states();
+        /** Under an integrator that extrapolates the laws (IMPL-EX): every
+         * nonlinear law extrapolates, or an error naming its entry. */
+        void
+        check_extrapolation() const;
         /** Solve @p step from the present state: predictor, Newton, the
          * update of the states after it. */
         StepOutcome
@@ -272,8 +276,39 @@ namespace masonry
       }
 
       void
+      Wallette::check_extrapolation() const
+      {
+        if (!integrator.extrapolates_laws())
+          return;
+        const auto refuse = [](const std::string &entry) {
+          return ExcMessage(
+            "`Damage integration = implex' needs laws that extrapolate "
+            "their internal variables, and the law of `" +
+            entry +
+            "' does not (its extrapolates() is false: it has no IMPL-EX "
+            "evaluate_extrapolated()); set `Damage integration = implicit' "
+            "or give the law both");
+        };
+        const auto brick_ok = [](const BrickMaterial &m) {
+          return m.is_linear() || m.extrapolates();
+        };
+        const auto joint_ok = [](const InterfaceLaw &l) {
+          return l.is_linear() || l.extrapolates();
+        };
+        // (with a mortar, `material' holds units and mortar: the mortar's
+        // law is asked first, so that a refusal of both names the units)
+        AssertThrow(mortar == nullptr || brick_ok(*mortar),
+                    refuse("Mortar material/Model"));
+        AssertThrow(brick_ok(material), refuse("Brick material/Model"));
+        AssertThrow(joint_ok(law), refuse("Interface law/Law"));
+        AssertThrow(splitting_law == nullptr || joint_ok(*splitting_law),
+                    refuse("Wallette/Splitting interfaces"));
+      }
+
+      void
       Wallette::setup_point_states()
       {
+        check_extrapolation();
         AssertThrow(material.nonlocal_length() == 0 ||
                       integrator.updates_after_step(),
                     ExcMessage("Brick material: `Nonlocal length' > 0 needs "

@@ -131,7 +131,10 @@ namespace masonry
        * pseudo-time from the two last converged states, @p old + @p ratio
        * (@p old - @p older), where @p ratio is the ratio of this step's
        * pseudo-time increment to the last one; nothing is updated. The
-       * default evaluates the implicit law from @p old.
+       * default evaluates the implicit law from @p old, which is no
+       * extrapolation: a law that overrides this function says so with
+       * extrapolates(), and `Damage integration = implex' refuses a
+       * nonlinear law that does not.
        */
       virtual void
       evaluate_extrapolated(const dealii::SymmetricTensor<2, 3> &strain,
@@ -141,6 +144,19 @@ namespace masonry
                             const BrickPoint                    &point,
                             dealii::SymmetricTensor<2, 3>       &stress,
                             dealii::SymmetricTensor<4, 3>       &tangent) const;
+
+      /**
+       * Whether the law extrapolates its internal variables in
+       * evaluate_extrapolated() (IMPL-EX). `Damage integration = implex'
+       * stops before the first step with a one-line error naming `Brick
+       * material/Model' (or `Mortar material/Model') when a nonlinear law
+       * does not: the default evaluate_extrapolated() would run the
+       * implicit law without its tangent's extrapolation and without the
+       * damage error that controls IMPL-EX's step size. False by default;
+       * a linear law needs none.
+       */
+      virtual bool
+      extrapolates() const;
 
       /**
        * The stress of evaluate_extrapolated() without the tangent (residual

@@ -91,7 +91,10 @@ namespace masonry
        * IMPL-EX: traction and tangent at @p jump with the damage
        * extrapolated from the two last converged states, @p old + @p ratio
        * (@p old - @p older), not updated. The default evaluates the
-       * implicit law from @p old.
+       * implicit law from @p old, which is no extrapolation: a law that
+       * overrides this function says so with extrapolates(), and
+       * `Damage integration = implex' refuses a nonlinear law that does
+       * not.
        */
       virtual void
       evaluate_extrapolated(const Local3         &jump,
@@ -125,6 +128,19 @@ namespace masonry
       /** Whether the law is linear (tangent independent of the state). */
       virtual bool
       is_linear() const
+      {
+        return false;
+      }
+
+      /**
+       * Whether the law extrapolates its damage in evaluate_extrapolated()
+       * (IMPL-EX). `Damage integration = implex' stops before the first
+       * step with a one-line error naming the law's selection entry when a
+       * nonlinear law does not (see BrickMaterial::extrapolates()). False
+       * by default; a linear law needs none.
+       */
+      virtual bool
+      extrapolates() const
       {
         return false;
       }

@@ -108,6 +108,12 @@ namespace masonry
           {
             return true;
           }
+
+          bool
+          extrapolates_laws() const override
+          {
+            return true;
+          }
         };
       } // namespace
     }   // namespace model

@@ -143,6 +143,19 @@ namespace masonry
         virtual bool
         updates_after_step() const = 0;
 
+        /**
+         * Whether the integrator evaluates the laws with their internal
+         * variables extrapolated (IMPL-EX): then every nonlinear law must
+         * say that it extrapolates (BrickMaterial::extrapolates(),
+         * InterfaceLaw::extrapolates()), or the run stops before its first
+         * step. False by default.
+         */
+        virtual bool
+        extrapolates_laws() const
+        {
+          return false;
+        }
+
         /** The damage a point had in the step, from its two last converged
          * values (IMPL-EX extrapolation, within [d_old, 1]). */
         double

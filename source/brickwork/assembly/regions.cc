@@ -161,6 +161,13 @@ namespace masonry
         return unit.is_linear() && mortar.is_linear();
       }
 
+      bool
+      RegionMaterial::extrapolates() const
+      {
+        return (unit.is_linear() || unit.extrapolates()) &&
+               (mortar.is_linear() || mortar.extrapolates());
+      }
+
       double
       RegionMaterial::youngs_modulus() const
       {

@@ -47,6 +47,9 @@ namespace masonry
 
         bool
         is_linear() const override;
+        /** Whether each nonlinear part extrapolates. */
+        bool
+        extrapolates() const override;
         /** The units' moduli (scales of the model). */
         double
         youngs_modulus() const override;

@@ -255,6 +255,12 @@ namespace masonry
                damage(jump, point.strength_factor) == 0;
       }
 
+      bool
+      extrapolates() const override
+      {
+        return true;
+      }
+
       void
       evaluate_extrapolated(const Local3  &jump,
                             ConstStateView old,

@@ -104,6 +104,12 @@ namespace masonry
     BrickMaterial::check_point(const BrickPoint &) const
     {}
 
+    bool
+    BrickMaterial::extrapolates() const
+    {
+      return false;
+    }
+
     void
     BrickMaterial::evaluate_extrapolated(
       const dealii::SymmetricTensor<2, 3> &strain,

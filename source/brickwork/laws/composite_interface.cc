@@ -320,6 +320,12 @@ namespace masonry
         pack(s, updated);
       }
 
+      bool
+      extrapolates() const override
+      {
+        return true;
+      }
+
       void
       evaluate_extrapolated(const Local3  &jump,
                             ConstStateView old,

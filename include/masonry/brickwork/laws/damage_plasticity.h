@@ -167,6 +167,14 @@ namespace masonry
         return false;
       }
 
+      /** IMPL-EX: evaluate_extrapolated() extrapolates the damages and the
+       * plastic strain. */
+      bool
+      extrapolates() const override
+      {
+        return true;
+      }
+
       std::vector<StateVariable>
       state_variables() const override;
 
