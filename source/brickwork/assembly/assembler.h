@@ -96,6 +96,10 @@ namespace masonry
         }
       };
 
+      /** The interfaces this rank assembles: owned and not deleted. */
+      std::vector<unsigned int>
+      active_faces(const AssemblyParts &parts);
+
       /** Assembles forces and tangents; keeps the elastic caches. */
       class Assembler
       {

@@ -2,8 +2,8 @@
  * @file
  * Brick material `damage plasticity': its entries, their parsing, its
  * state variables and derived values (the law itself:
- * damage_plasticity.cc; the class: include/masonry/brickwork/laws/
- * damage_plasticity.h).
+ * damage_plasticity.cc and damage_plasticity_measures.cc; the class:
+ * include/masonry/brickwork/laws/damage_plasticity.h).
  */
 #include <masonry/brickwork/laws/damage_plasticity.h>
 #include <masonry/core/parameters.h>

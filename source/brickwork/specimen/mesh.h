@@ -146,6 +146,10 @@ namespace masonry
       unsigned int
       divisions(const Box &box, const unsigned int d, const double h);
 
+      /** The direction a unit is split in (its longer horizontal side). */
+      unsigned int
+      split_direction(const Box &box);
+
       /**
        * Fill @p triangulation with the bricks @p boxes (material id = brick
        * index) meshed as @p settings say; returns the dimensions.
