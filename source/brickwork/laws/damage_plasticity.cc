@@ -367,10 +367,8 @@ namespace masonry
       // to 0 (the trial lateral stresses of a point in uniaxial stress are
       // lambda dp < nu / (1 - nu) s1). Otherwise (multiaxial tension) N =
       // s+ / tau_t, the positive principal directions together
-      const SymmetricTensor<2, 3> s0 = plus + minus;
-      const auto                  eig =
-        dealii::eigenvectors(s0,
-                             dealii::SymmetricTensorEigenvectorMethod::hybrid);
+      const SymmetricTensor<2, 3> s0  = plus + minus;
+      const auto                  eig = dealii::eigenvectors(s0);
       const SymmetricTensor<2, 3> N =
         eig[1].first <= nu / (1 - nu) * eig[0].first ?
           SymmetricTensor<2, 3>(dealii::symmetrize(

@@ -85,9 +85,10 @@ namespace masonry
       // (arccos, cos) cost more than the rest of this function
       if (all_principal_values_below(s, -1e-6 * s.norm()))
         return P;
-      const auto eig =
-        dealii::eigenvectors(s,
-                             dealii::SymmetricTensorEigenvectorMethod::hybrid);
+      // (deal.II's QL: its `hybrid' method, analytical, is cheaper, but
+      // its eigenvectors of nearly equal principal stresses made Newton
+      // stall in a cracked cyclic wallette, tests/brickwork_unloading_floor)
+      const auto eig = dealii::eigenvectors(s);
       if (largest)
         *largest = std::max(eig[0].first, 0.);
       SymmetricTensor<2, 3> M[3];
