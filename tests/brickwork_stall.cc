@@ -107,6 +107,27 @@ namespace
         stress[0][0] = std::numeric_limits<double>::quiet_NaN();
     }
 
+    // the stress does not depend on the state: the IMPL-EX response with
+    // extrapolated states is the elastic one, and the law says that it
+    // extrapolates (there is nothing to extrapolate)
+    void
+    evaluate_extrapolated(const SymmetricTensor<2, 3> &strain,
+                          ConstStateView,
+                          ConstStateView,
+                          const double,
+                          const BrickPoint &,
+                          SymmetricTensor<2, 3> &stress,
+                          SymmetricTensor<4, 3> &tangent) const override
+    {
+      tangent = elastic_stiffness();
+      stress  = tangent * strain;
+    }
+    bool
+    extrapolates() const override
+    {
+      return true;
+    }
+
   private:
     double breaking   = 1e-4;
     bool   nan_damage = false;
