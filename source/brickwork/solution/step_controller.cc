@@ -97,7 +97,9 @@ namespace masonry
           "at this floor such steps are accepted and counted "
           "(`implex_steps_over_tolerance' in summary.json) instead of "
           "shrinking the step towards zero. Cut-backs after a failed Newton "
-          "solve are not limited by it.");
+          "solve are not limited by it, and the steps after a cut-back keep "
+          "its smaller size while their damage error stays over the "
+          "tolerance (they grow once it is below half of it).");
         prm.declare_entry(
           "IMPL-EX minimum step when unloading",
           "0",
