@@ -439,31 +439,24 @@ namespace masonry
         const Vector<double>                 &ue,
         std::array<SymmetricTensor<2, 3>, 8> &strain) const
       {
-        // the displacement gradient first (row c_i gets u_i g_i), then its
-        // symmetric part: deal.II's sum of value * symmetrize_single_row(c,
-        // g) over the shape functions without its zero terms, in a loop
-        // the compiler vectorises (the sums differ from that order by
-        // round-off)
+        // deal.II's value * symmetrize_single_row(c, g) summed over the
+        // shape functions in order, without its zero terms: (c, c) gets
+        // u g[c], (c, b) u (g[b] / 2); entries [00, 11, 22, 01, 02, 12]
+        static constexpr unsigned int off[3][3] = {{0, 3, 4},
+                                                   {3, 1, 5},
+                                                   {4, 5, 2}};
         for (unsigned int q = 0; q < 8; ++q)
           {
-            double                              G[3][3] = {};
-            const std::array<Tensor<1, 3>, 24> &grad    = geometry.grad[q];
+            double e[6] = {0, 0, 0, 0, 0, 0};
             for (unsigned int i = 0; i < 24; ++i)
               {
                 const double        u = ue[i];
-                const Tensor<1, 3> &g = grad[i];
-                double(&row)[3]       = G[component[i]];
-                row[0] += u * g[0];
-                row[1] += u * g[1];
-                row[2] += u * g[2];
+                const unsigned int  a = component[i];
+                const Tensor<1, 3> &g = geometry.grad[q][i];
+                for (unsigned int b = 0; b < 3; ++b)
+                  e[off[a][b]] += b == a ? u * g[b] : u * (g[b] / 2);
               }
-            const double e[6] = {G[0][0],
-                                 G[1][1],
-                                 G[2][2],
-                                 (G[0][1] + G[1][0]) / 2,
-                                 (G[0][2] + G[2][0]) / 2,
-                                 (G[1][2] + G[2][1]) / 2};
-            strain[q]         = SymmetricTensor<2, 3>(e);
+            strain[q] = SymmetricTensor<2, 3>(e);
           }
       }
 
