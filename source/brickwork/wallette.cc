@@ -295,8 +295,9 @@ namespace masonry
         const auto joint_ok = [](const InterfaceLaw &l) {
           return l.is_linear() || l.extrapolates();
         };
-        // (with a mortar, `material' holds units and mortar: the mortar's
-        // law is asked first, so that a refusal of both names the units)
+        // (with a mortar, `material' holds units and mortar and refuses if
+        // either does: the mortar's own law is asked first, so that
+        // `material' then refuses only for the units)
         AssertThrow(mortar == nullptr || brick_ok(*mortar),
                     refuse("Mortar material/Model"));
         AssertThrow(brick_ok(material), refuse("Brick material/Model"));
