@@ -289,20 +289,17 @@ namespace masonry
             "evaluate_extrapolated()); set `Damage integration = implicit' "
             "or give the law both");
         };
-        const auto brick_ok = [](const BrickMaterial &m) {
-          return m.is_linear() || m.extrapolates();
-        };
-        const auto joint_ok = [](const InterfaceLaw &l) {
-          return l.is_linear() || l.extrapolates();
+        const auto ok = [](const auto &part) {
+          return part.is_linear() || part.extrapolates();
         };
         // (with a mortar, `material' holds units and mortar and refuses if
         // either does: the mortar's own law is asked first, so that
         // `material' then refuses only for the units)
-        AssertThrow(mortar == nullptr || brick_ok(*mortar),
+        AssertThrow(mortar == nullptr || ok(*mortar),
                     refuse("Mortar material/Model"));
-        AssertThrow(brick_ok(material), refuse("Brick material/Model"));
-        AssertThrow(joint_ok(law), refuse("Interface law/Law"));
-        AssertThrow(splitting_law == nullptr || joint_ok(*splitting_law),
+        AssertThrow(ok(material), refuse("Brick material/Model"));
+        AssertThrow(ok(law), refuse("Interface law/Law"));
+        AssertThrow(splitting_law == nullptr || ok(*splitting_law),
                     refuse("Wallette/Splitting interfaces"));
       }
 
