@@ -89,24 +89,12 @@ namespace
                 fe_values.reinit(cell);
                 fe_values[displacement].get_function_symmetric_gradients(u,
                                                                          eps);
-                masonry::brickwork::BrickPoint point;
-                point.region =
-                  view.specimen.cell_region[cell->active_cell_index()];
                 for (unsigned int q = 0; q < 8; ++q)
                   {
-                    SymmetricTensor<2, 3> s;
-                    SymmetricTensor<4, 3> C;
-                    // the converged state at the converged strain
-                    const unsigned int  p = 8 * cell->active_cell_index() + q;
-                    std::vector<double> scratch(view.bricks.n_values());
-                    view.material.evaluate(eps[q],
-                                           view.material.is_linear() ?
-                                             ConstStateView() :
-                                             view.bricks.old(p),
-                                           point,
-                                           scratch,
-                                           s,
-                                           C);
+                    // the converged state at the converged strain, by the
+                    // law of the cell's region
+                    const SymmetricTensor<2, 3> s =
+                      view.brick_stress(cell->active_cell_index(), q, eps[q]);
                     mean += s;
                     ++n;
                   }

@@ -213,8 +213,12 @@ namespace
           n += v.n_components;
         std::vector<double> initial(n);
         law->initial_state(initial);
-        PointStates bricks;
-        bricks.initialize(8, initial, {});
+        // the law as the units' of a law set, with its point states
+        masonry::brickwork::LawSet laws;
+        laws.add_region_law(*law, "Brick material/Model", "");
+        LawStates states;
+        states.bricks.resize(1);
+        states.bricks[0].initialize(8, initial, {});
         Specimen specimen;
         specimen.cell_length      = {0.05};
         specimen.cell_factor      = {1.};
@@ -233,7 +237,7 @@ namespace
               expected[0][0] += 2 * mu * e;
               elastic_error = std::max(
                 elastic_error,
-                (converged_stress(*law, strain, bricks, specimen, 0, q) -
+                (converged_stress(laws, strain, states, specimen, 0, q) -
                  expected)
                     .norm() /
                   f_t);
@@ -252,9 +256,9 @@ namespace
         std::vector<double> updated(n), d(2);
         law->update_state(strain, initial, point, updated, stress);
         law->damages(updated, d);
-        bricks.initialize(8, updated, {});
+        states.bricks[0].initialize(8, updated, {});
         const double error =
-          (converged_stress(*law, strain, bricks, specimen, 0, 3) - stress)
+          (converged_stress(laws, strain, states, specimen, 0, 3) - stress)
             .norm() /
           f_t;
         check(d[0] > 0 && error < 1e-9,

@@ -160,6 +160,9 @@ namespace masonry
                 plugins::Registry<brickwork::BrickMaterial>::selected(prm)),
             s.mesh.size.length -
               (s.mesh.detailed ? s.mesh.mortar_thickness : 0.));
+        make_law_set();
+        // (checked again by run_wallette(): here for --validate)
+        brickwork::check_laws(laws, *integrator, s);
         // the height of the wallette (the detailed one's top course has no
         // bed joint above it)
         protocol->initialize(s.mesh.size.height * s.mesh.size.courses -
@@ -174,16 +177,30 @@ namespace masonry
       {
         brickwork::run_wallette(
           boxes,
-          *material,
-          *law,
+          laws,
           s,
           {*protocol, *integrator, *solver, postprocessors},
-          context,
-          splitting_law.get(),
-          mortar.get());
+          context);
       }
 
     private:
+      /** The laws by cell region and joint type, each named by the entry
+       * that selects it. */
+      void
+      make_law_set()
+      {
+        laws.add_region_law(*material, "Brick material/Model", "");
+        if (mortar)
+          laws.add_region_law(*mortar, "Mortar material/Model", "mortar_");
+        // bed, head and collar joints
+        laws.add_joint_law({0, 1, 2}, *law, "Interface law/Law", "");
+        if (splitting_law)
+          laws.add_joint_law({brickwork::model::splitting_type},
+                             *splitting_law,
+                             "Wallette/Splitting interfaces",
+                             "splitting_");
+      }
+
       /**
        * The listed postprocessors in their order, `curve tables' also when
        * not listed (curve.csv is always written), `fields' and `joint
@@ -230,6 +247,7 @@ namespace masonry
       std::unique_ptr<brickwork::LinearSolver>      solver;
       brickwork::SplittingSettings                  splitting;
       std::unique_ptr<brickwork::InterfaceLaw>      splitting_law;
+      brickwork::LawSet                             laws;
       std::vector<brickwork::Box>                   boxes;
       std::vector<std::unique_ptr<brickwork::postprocess::Postprocessor>>
         postprocessors;

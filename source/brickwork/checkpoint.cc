@@ -64,7 +64,7 @@ namespace masonry
         serialize_parts(Archive &ar, const CheckpointParts &parts)
         {
           ar &parts.controller &parts.curve &parts.statistics &parts.specimen;
-          ar &parts.bricks &parts.joint_points &parts.splitting_points;
+          ar                                                  &parts.states;
           ar &parts.solver &parts.postprocessors;
         }
 

@@ -65,11 +65,10 @@ namespace masonry
         std::vector<CurvePoint> &curve;
         RunStatistics           &statistics;
         Specimen                &specimen;
-        PointStates             &bricks;
-        PointStates             &joint_points;
-        PointStates             &splitting_points;
-        LinearSolver            &solver;
-        System                  &system;
+        /** The point states of every law. */
+        LawStates    &states;
+        LinearSolver &solver;
+        System       &system;
         /** What each postprocessor saves, in their order. */
         std::vector<std::string> &postprocessors;
       };

@@ -29,7 +29,6 @@
 #include <sstream>
 #include <typeinfo>
 
-#include "assembly/regions.h"
 #include "curve_summary.h"
 #include "postprocess/report.h"
 #include "postprocess/view.h"
@@ -79,10 +78,7 @@ namespace masonry
       {
       public:
         Wallette(const std::vector<Box> &boxes,
-                 const BrickMaterial    &material,
-                 const InterfaceLaw     &law,
-                 const InterfaceLaw     *splitting_law,
-                 const BrickMaterial    *mortar,
+                 const LawSet           &laws,
                  const WalletteSettings &settings,
                  const WallettePlugins  &plugins,
                  RunContext             &context);
@@ -101,10 +97,6 @@ namespace masonry
          * the laws declare them). */
         void
         setup_point_states();
-        /** Under an integrator that extrapolates the laws (IMPL-EX): every
-         * nonlinear law extrapolates, or an error naming its entry. */
-        void
-        check_extrapolation() const;
         /** Solve @p step from the present state: predictor, Newton, the
          * update of the states after it. */
         StepOutcome
@@ -145,13 +137,8 @@ namespace masonry
                const std::string &message,
                const double       seconds);
 
-        const BrickMaterial &material;
-        const InterfaceLaw  &law;
-        /** The splitting interfaces' law, nullptr: none. */
-        const InterfaceLaw *splitting_law;
-        /** The mortar's own law (detailed model; `material' then holds
-         * both), nullptr: the simplified model. */
-        const BrickMaterial               *mortar;
+        /** The laws of the cell regions and the joint types. */
+        const LawSet                      &laws;
         const WalletteSettings            &settings;
         const WallettePlugins             &plugins;
         Integrator                        &integrator;
@@ -163,7 +150,8 @@ namespace masonry
         System                             system;
         Joints                             joints;
         Specimen                           specimen;
-        PointStates                     bricks, joint_points, splitting_points;
+        /** The states of the laws' points. */
+        LawStates                       states;
         std::unique_ptr<Assembler>      assembler;
         std::unique_ptr<Newton>         newton;
         std::unique_ptr<StepController> controller;
@@ -176,17 +164,11 @@ namespace masonry
       };
 
       Wallette::Wallette(const std::vector<Box> &boxes,
-                         const BrickMaterial    &material,
-                         const InterfaceLaw     &law,
-                         const InterfaceLaw     *splitting_law,
-                         const BrickMaterial    *mortar,
+                         const LawSet           &laws,
                          const WalletteSettings &settings,
                          const WallettePlugins  &plugins,
                          RunContext             &context)
-        : material(material)
-        , law(law)
-        , splitting_law(splitting_law)
-        , mortar(mortar)
+        : laws(laws)
         , settings(settings)
         , plugins(plugins)
         , integrator(plugins.integrator)
@@ -229,37 +211,27 @@ namespace masonry
                                  joints,
                                  settings.specimen);
         setup_point_states();
-        assembler = std::make_unique<Assembler>(AssemblyParts{system,
-                                                              joints,
-                                                              specimen,
-                                                              material,
-                                                              law,
-                                                              integrator,
-                                                              bricks,
-                                                              joint_points,
-                                                              splitting_law,
-                                                              splitting_points},
-                                                settings.mesh.gauss,
-                                                spacing[0]);
+        assembler = std::make_unique<Assembler>(
+          AssemblyParts{system, joints, specimen, laws, integrator, states},
+          settings.mesh.gauss,
+          spacing[0]);
         assembler->make_elastic_caches();
         solver.initialize(system.dof_handler, pcout);
         const double target = plugins.protocol.target_displacement();
-        newton              = std::make_unique<Newton>(settings.newton,
-                                          1e-6 * material.youngs_modulus() *
-                                            geometry.gross_area *
-                                            std::abs(target) / geometry.height);
+        newton              = std::make_unique<Newton>(
+          settings.newton,
+          1e-6 * laws.brick_law(unit_region).youngs_modulus() *
+            geometry.gross_area * std::abs(target) / geometry.height);
         controller =
           std::make_unique<StepController>(plugins.protocol,
                                            settings.steps,
                                            integrator.updates_after_step(),
                                            settings.newton.max_newton,
-                                           bound_materials(material, mortar),
+                                           bound_materials(laws),
                                            pcout);
         view = std::make_unique<ModelView>(ModelView{settings,
                                                      context,
-                                                     material,
-                                                     law,
-                                                     splitting_law,
+                                                     laws,
                                                      plugins.protocol,
                                                      curve,
                                                      joints,
@@ -267,104 +239,68 @@ namespace masonry
                                                      system,
                                                      specimen,
                                                      assembler->element(),
-                                                     bricks,
-                                                     joint_points,
-                                                     splitting_points,
+                                                     states,
                                                      *controller});
         postprocessor_data.assign(plugins.postprocessors.size(), std::string());
         u_converged = system.u;
       }
 
       void
-      Wallette::check_extrapolation() const
-      {
-        if (!integrator.extrapolates_laws())
-          return;
-        const auto refuse = [](const std::string &entry) {
-          return ExcMessage(
-            "`Damage integration = implex' needs laws that extrapolate "
-            "their internal variables, and the law of `" +
-            entry +
-            "' does not (its extrapolates() is false: it has no IMPL-EX "
-            "evaluate_extrapolated()); set `Damage integration = implicit' "
-            "or give the law both");
-        };
-        const auto ok = [](const auto &part) {
-          return part.is_linear() || part.extrapolates();
-        };
-        // (with a mortar, `material' holds units and mortar and refuses if
-        // either does: the mortar's own law is asked first, so that
-        // `material' then refuses only for the units)
-        AssertThrow(mortar == nullptr || ok(*mortar),
-                    refuse("Mortar material/Model"));
-        AssertThrow(ok(material), refuse("Brick material/Model"));
-        AssertThrow(ok(law), refuse("Interface law/Law"));
-        AssertThrow(splitting_law == nullptr || ok(*splitting_law),
-                    refuse("Wallette/Splitting interfaces"));
-      }
-
-      void
       Wallette::setup_point_states()
       {
-        check_extrapolation();
-        AssertThrow(material.nonlocal_length() == 0 ||
-                      integrator.updates_after_step(),
-                    ExcMessage("Brick material: `Nonlocal length' > 0 needs "
-                               "`Damage integration = implex'"));
-        AssertThrow(material.nonlocal_length() == 0 ||
-                      !settings.steps.implex_floor_correction,
-                    ExcMessage("Brick material: `Nonlocal length' > 0 needs "
-                               "`IMPL-EX floor correction = accept'"));
-        std::vector<unsigned int> owned_bricks, owned_joints, owned_splitting;
+        check_laws(laws, integrator, settings);
+        // each law's points: every cell's (face's) points are in every
+        // law's states, and each cell (face) uses and checkpoints those of
+        // the law of its region (type)
+        std::vector<std::vector<unsigned int>> owned_bricks(laws.n_regions()),
+          owned_joints(laws.n_joint_laws());
         for (const auto &cell : triangulation.active_cell_iterators())
-          if (cell->is_locally_owned() && !material.is_linear())
+          if (cell->is_locally_owned())
             {
+              const unsigned int   c      = cell->active_cell_index();
+              const unsigned int   region = specimen.cell_region[c];
+              const BrickMaterial &law    = laws.brick_law(region);
+              if (law.is_linear())
+                continue;
               BrickPoint point;
-              point.characteristic_length =
-                specimen.cell_length[cell->active_cell_index()];
-              point.strength_factor =
-                specimen.cell_factor[cell->active_cell_index()];
-              point.region = specimen.cell_region[cell->active_cell_index()];
-              material.check_point(point);
+              point.characteristic_length = specimen.cell_length[c];
+              point.strength_factor       = specimen.cell_factor[c];
+              law.check_point(point);
               for (unsigned int q = 0; q < 8; ++q)
-                owned_bricks.push_back(8 * cell->active_cell_index() + q);
+                owned_bricks[region].push_back(8 * c + q);
             }
         for (unsigned int n = 0; n < joints.faces.size(); ++n)
           if (joints.faces[n].owned)
             for (unsigned int q = 0; q < InterfaceElement::n_points; ++q)
-              (joints.faces[n].type == splitting_type ? owned_splitting :
-                                                        owned_joints)
-                .push_back(InterfaceElement::n_points * n + q);
-        std::vector<double> initial(
-          material.is_linear() ? 0 :
-                                 n_state_values(material.state_variables()));
-        material.initial_state(initial);
-        bricks.initialize(8 * triangulation.n_active_cells(),
-                          initial,
-                          owned_bricks);
-        initial.assign(n_state_values(law.state_variables()), 0.);
-        law.initial_state(initial);
-        joint_points.initialize(InterfaceElement::n_points *
-                                  joints.faces.size(),
-                                initial,
-                                owned_joints);
-        AssertThrow(splitting_law ||
-                      joints.n_faces_of_type[splitting_type] == 0,
-                    ExcMessage("internal error: splitting interfaces "
-                               "without a law"));
-        // the splitting interfaces' states, indexed like the joints' (only
-        // those of splitting faces are used)
-        initial.clear();
-        if (splitting_law)
+              owned_joints[laws.slot_of_type(joints.faces[n].type)].push_back(
+                InterfaceElement::n_points * n + q);
+        std::vector<double> initial;
+        states.bricks.resize(laws.n_regions());
+        for (unsigned int r = 0; r < laws.n_regions(); ++r)
           {
-            initial.assign(n_state_values(splitting_law->state_variables()),
-                           0.);
-            splitting_law->initial_state(initial);
+            const BrickMaterial &law = laws.brick_law(r);
+            initial.assign(
+              law.is_linear() ? 0 : n_state_values(law.state_variables()), 0.);
+            law.initial_state(initial);
+            states.bricks[r].initialize(8 * triangulation.n_active_cells(),
+                                        initial,
+                                        owned_bricks[r]);
           }
-        splitting_points.initialize(InterfaceElement::n_points *
-                                      joints.faces.size(),
-                                    initial,
-                                    owned_splitting);
+        states.joints.resize(laws.n_joint_laws());
+        for (unsigned int slot = 0; slot < laws.n_joint_laws(); ++slot)
+          {
+            const InterfaceLaw &law = *laws.joint(slot).law;
+            initial.assign(n_state_values(law.state_variables()), 0.);
+            law.initial_state(initial);
+            states.joints[slot].initialize(InterfaceElement::n_points *
+                                             joints.faces.size(),
+                                           initial,
+                                           owned_joints[slot]);
+          }
+        for (unsigned int t = 0; t < joints.n_faces_of_type.size(); ++t)
+          AssertThrow(joints.n_faces_of_type[t] == 0 || laws.has_joint_law(t),
+                      ExcMessage(std::string("internal error: ") +
+                                 joint_type_name[t] + " faces without a law"));
       }
 
       StepOutcome
@@ -400,21 +336,25 @@ namespace masonry
       double
       Wallette::damage_change() const
       {
-        double c = joint_points.largest_damage_change(law);
-        if (!material.is_linear())
-          c = std::max(c, bricks.largest_damage_change(material));
-        if (splitting_law)
-          c =
-            std::max(c, splitting_points.largest_damage_change(*splitting_law));
+        double c = 0;
+        for (unsigned int r = 0; r < laws.n_regions(); ++r)
+          if (!laws.brick_law(r).is_linear())
+            c = std::max(
+              c, states.bricks[r].largest_damage_change(laws.brick_law(r)));
+        for (unsigned int slot = 0; slot < laws.n_joint_laws(); ++slot)
+          c = std::max(c,
+                       states.joints[slot].largest_damage_change(
+                         *laws.joint(slot).law));
         return Utilities::MPI::max(c, context.mpi_communicator);
       }
 
       void
       Wallette::freeze()
       {
-        bricks.freeze();
-        joint_points.freeze();
-        splitting_points.freeze();
+        for (PointStates &s : states.bricks)
+          s.freeze();
+        for (PointStates &s : states.joints)
+          s.freeze();
       }
 
       unsigned int
@@ -424,15 +364,17 @@ namespace masonry
         for (unsigned int n = 0; n < joints.faces.size(); ++n)
           if (joints.faces[n].owned)
             for (unsigned int q = 0; q < InterfaceElement::n_points; ++q)
-              (joints.faces[n].type == splitting_type ? splitting_points :
-                                                        joint_points)
-                .accept(InterfaceElement::n_points * n + q, older);
-        if (!material.is_linear())
+              states.joints[laws.slot_of_type(joints.faces[n].type)].accept(
+                InterfaceElement::n_points * n + q, older);
+        if (!laws.bricks_linear())
           for (const auto &cell : triangulation.active_cell_iterators())
-            if (cell->is_locally_owned() &&
-                !specimen.deleted[cell->active_cell_index()])
-              for (unsigned int q = 0; q < 8; ++q)
-                bricks.accept(8 * cell->active_cell_index() + q, older);
+            {
+              const unsigned int c = cell->active_cell_index();
+              if (cell->is_locally_owned() && !specimen.deleted[c])
+                for (unsigned int q = 0; q < 8; ++q)
+                  states.bricks[specimen.cell_region[c]].accept(8 * c + q,
+                                                                older);
+            }
         // the deletion and the output evaluate the law with them
         specimen.nonlocal_factors = assembler->nonlocal_factors();
         system.last_increment     = system.u;
@@ -445,8 +387,8 @@ namespace masonry
                                  step.leg.unloading};
         const unsigned int removed = delete_cells(settings.deletion,
                                                   joints,
-                                                  material,
-                                                  bricks,
+                                                  laws,
+                                                  states,
                                                   system,
                                                   specimen,
                                                   after,
@@ -522,9 +464,7 @@ namespace masonry
                 curve,
                 statistics,
                 specimen,
-                bricks,
-                joint_points,
-                splitting_points,
+                states,
                 solver,
                 system,
                 postprocessor_data};
@@ -590,7 +530,7 @@ namespace masonry
       {
         const auto  start = Clock::now();
         StopSignals stop_signals;
-        describe_model(*view, mortar);
+        describe_model(*view);
         begin();
         if (!plugins.protocol.description().empty())
           pcout << plugins.protocol.description() << "\n";
@@ -690,7 +630,7 @@ namespace masonry
         // postprocessor may read them
         write_curve_summary(curve,
                             system.gauge_span,
-                            material.damage_names(),
+                            laws.brick_damage_names(),
                             summary);
         for (auto &pp : plugins.postprocessors)
           pp->finish(*view, summary);
@@ -722,10 +662,10 @@ namespace masonry
                        all = e + Utilities::MPI::sum(double(evaluated), comm);
           return all > 0 ? e / all : 0.;
         };
-        if (!material.is_linear())
+        if (!laws.bricks_linear())
           summary["cell_evaluations_elastic_fraction"] =
             elastic_fraction(a.n_elastic_cells, a.n_material_cells);
-        if (!law.is_linear() || splitting_law)
+        if (!laws.joints_linear() || laws.has_joint_law(splitting_type))
           summary["interface_evaluations_elastic_fraction"] =
             elastic_fraction(a.n_elastic_interfaces, a.n_law_interfaces);
         summary["seconds"]          = seconds;
@@ -748,35 +688,67 @@ namespace masonry
     } // namespace
 
     void
+    check_laws(const LawSet            &laws,
+               const model::Integrator &integrator,
+               const WalletteSettings  &settings)
+    {
+      const BrickMaterial &units = laws.brick_law(unit_region);
+      AssertThrow(units.nonlocal_length() == 0 ||
+                    integrator.updates_after_step(),
+                  ExcMessage("Brick material: `Nonlocal length' > 0 needs "
+                             "`Damage integration = implex'"));
+      AssertThrow(units.nonlocal_length() == 0 ||
+                    !settings.steps.implex_floor_correction,
+                  ExcMessage("Brick material: `Nonlocal length' > 0 needs "
+                             "`IMPL-EX floor correction = accept'"));
+      for (unsigned int r = 1; r < laws.n_regions(); ++r)
+        AssertThrow(laws.brick_law(r).nonlocal_length() == 0,
+                    ExcMessage("the law of `" + laws.region(r).entry +
+                               "': `Nonlocal length' must be 0 (the "
+                               "nonlocal average acts on the units only)"));
+      if (!integrator.extrapolates_laws())
+        return;
+      const auto refuse = [](const std::string &entry) {
+        return ExcMessage(
+          "`Damage integration = implex' needs laws that extrapolate "
+          "their internal variables, and the law of `" +
+          entry +
+          "' does not (its extrapolates() is false: it has no IMPL-EX "
+          "evaluate_extrapolated()); set `Damage integration = implicit' "
+          "or give the law both");
+      };
+      const auto check = [&](const auto &entry) {
+        AssertThrow(entry.law->is_linear() || entry.law->extrapolates(),
+                    refuse(entry.entry));
+      };
+      for (unsigned int r = 0; r < laws.n_regions(); ++r)
+        check(laws.region(r));
+      for (unsigned int slot = 0; slot < laws.n_joint_laws(); ++slot)
+        check(laws.joint(slot));
+    }
+
+    void
     run_wallette(const std::vector<Box> &boxes,
-                 const BrickMaterial    &material,
-                 const InterfaceLaw     &law,
+                 const LawSet           &laws,
                  const WalletteSettings &settings,
                  const WallettePlugins  &plugins,
-                 RunContext             &context,
-                 const InterfaceLaw     *splitting_law,
-                 const BrickMaterial    *mortar_material)
+                 RunContext             &context)
     {
       if (!settings.mesh.detailed)
         check_mesh(boxes, settings.mesh);
-      AssertThrow(!settings.mesh.split_units || splitting_law,
+      AssertThrow(laws.n_regions() == (settings.mesh.detailed ? 2u : 1u),
+                  ExcMessage("internal error: the detailed model needs the "
+                             "laws of the units and of the mortar, the "
+                             "simplified one that of the units"));
+      for (unsigned int t = 0; t < splitting_type; ++t)
+        AssertThrow(laws.has_joint_law(t),
+                    ExcMessage(std::string("internal error: no law of the ") +
+                               joint_type_name[t] + " joints"));
+      AssertThrow(!settings.mesh.split_units ||
+                    laws.has_joint_law(splitting_type),
                   ExcMessage("internal error: split units need the "
                              "splitting interfaces' law"));
-      AssertThrow(!settings.mesh.detailed || mortar_material,
-                  ExcMessage("internal error: the detailed model needs the "
-                             "mortar's material"));
-      // the detailed model: units and mortar behind one material
-      std::unique_ptr<BrickMaterial> regions;
-      if (settings.mesh.detailed)
-        regions = std::make_unique<RegionMaterial>(material, *mortar_material);
-      Wallette wallette(boxes,
-                        regions ? *regions : material,
-                        law,
-                        splitting_law,
-                        settings.mesh.detailed ? mortar_material : nullptr,
-                        settings,
-                        plugins,
-                        context);
+      Wallette wallette(boxes, laws, settings, plugins, context);
       wallette.run();
     }
   } // namespace brickwork

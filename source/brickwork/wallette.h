@@ -11,6 +11,7 @@
 #define masonry_brickwork_wallette_h
 
 #include <masonry/brickwork/bond.h>
+#include <masonry/brickwork/law_set.h>
 #include <masonry/brickwork/linear_solver.h>
 #include <masonry/brickwork/postprocessor.h>
 #include <masonry/brickwork/protocol.h>
@@ -69,21 +70,29 @@ namespace masonry
     };
 
     /**
-     * Build, solve and write the results of a wallette under a platen.
-     * With MeshSettings::split_units the splitting interfaces through the
-     * units follow @p splitting_law (required then); with
-     * MeshSettings::detailed the mortar cells follow @p mortar_material
-     * (required then).
+     * Whether @p laws suit the run: under an integrator that extrapolates
+     * the laws (IMPL-EX) every nonlinear law extrapolates, and only the
+     * units' law has a nonlocal length (which needs IMPL-EX without its
+     * floor correction); else an error naming the entry.
+     */
+    void
+    check_laws(const LawSet            &laws,
+               const model::Integrator &integrator,
+               const WalletteSettings  &settings);
+
+    /**
+     * Build, solve and write the results of a wallette under a platen, with
+     * the @p laws of its cell regions (the units; with
+     * MeshSettings::detailed also the mortar) and joint types (bed, head
+     * and collar; with MeshSettings::split_units also the splitting
+     * interfaces through the units).
      */
     void
     run_wallette(const std::vector<Box> &boxes,
-                 const BrickMaterial    &material,
-                 const InterfaceLaw     &law,
+                 const LawSet           &laws,
                  const WalletteSettings &settings,
                  const WallettePlugins  &plugins,
-                 RunContext             &context,
-                 const InterfaceLaw     *splitting_law   = nullptr,
-                 const BrickMaterial    *mortar_material = nullptr);
+                 RunContext             &context);
   } // namespace brickwork
 } // namespace masonry
 

@@ -45,8 +45,10 @@ namespace
         "",
         dealii::Patterns::Anything(),
         "A state variable of the brick material (its first component) to "
-        "average over each cell as well, by the name the material declares "
-        "(e.g. damage_tension of the damage-plasticity law); empty: none.");
+        "average over each unit cell as well, by the name the material "
+        "declares (e.g. damage_tension of the damage-plasticity law; 0 in "
+        "the mortar cells of the detailed model, whose law is another); "
+        "empty: none.");
     }
 
     void
@@ -98,8 +100,9 @@ namespace
               {
                 for (unsigned int d = 0; d < 3; ++d)
                   strain[d][c] += eps[q][d][d] / gauss.size();
-                // brick point 8 c + q holds the state of Gauss point q
-                if (with_state)
+                // brick point 8 c + q holds the state of Gauss point q, in
+                // the layout of the law of the cell's region
+                if (with_state && region[c] == masonry::brickwork::unit_region)
                   state[c] += view.brick_state(8 * c + q)[index] / 8;
               }
           }
@@ -162,4 +165,4 @@ MASONRY_REGISTER_WALLETTE_POSTPROCESSOR(
   "PREFIX_NNNN.pvtu (`File prefix') at every output step: the cells' strain "
   "averaged over their Gauss points (xx, yy, zz, -), region (0 unit, 1 "
   "mortar), deleted (0/1) and, with `State variable', the cell average of "
-  "that state variable of the brick material.")
+  "that state variable of the brick material (units only).")

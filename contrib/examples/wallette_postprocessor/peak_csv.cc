@@ -39,14 +39,19 @@ namespace
     void
     finish(const ModelView &view, masonry::Json &) override
     {
-      // the joints' states: largest value of each component on this rank,
-      // then over the ranks (a rank holds current states of its own faces
-      // only, the others keep the initial state)
+      // the states of the law of the bed joints (also that of the head
+      // and collar joints), over the faces of that law: largest value of
+      // each component on this rank, then over the ranks (a rank holds
+      // current states of its own faces only, the others keep the initial
+      // state)
+      const InterfaceLaw            &law = view.laws.joint_law(0);
       const std::vector<std::string> names =
-        component_names(view.law.state_variables());
+        component_names(law.state_variables());
       std::vector<double> largest(names.size(), -1e300);
       for (unsigned int p = 0; p < view.n_joint_points(); ++p)
         {
+          if (&view.joint_law_of(p / 4) != &law)
+            continue;
           const ConstStateView state = view.joint_state(p);
           for (unsigned int k = 0; k < names.size(); ++k)
             largest[k] = std::max(largest[k], state[k]);

@@ -39,11 +39,6 @@ namespace masonry
        */
       double strength_factor = 1;
       /**
-       * What the point belongs to: 0 a unit (every cell of the simplified
-       * model), 1 the mortar of the detailed model.
-       */
-      unsigned int region = 0;
-      /**
        * Factors on the law's tensile and compressive measures
        * (dimensionless, 1: local): with a nonlocal length (nonlocal_length()
        * > 0) the model sets them, in the implicit update after an IMPL-EX
@@ -201,13 +196,6 @@ namespace masonry
        */
       virtual dealii::SymmetricTensor<4, 3>
       elastic_stiffness() const;
-      /**
-       * The initial stiffness at @p point: elastic_stiffness() by default;
-       * a model of several materials (units and mortar) picks the one of
-       * the point's region.
-       */
-      virtual dealii::SymmetricTensor<4, 3>
-      elastic_stiffness_at(const BrickPoint &point) const;
 
       /**
        * The unit's uniaxial strengths (Pa) and tensile fracture energy

@@ -17,6 +17,7 @@
 
 #include <masonry/brickwork/curve.h>
 #include <masonry/brickwork/joint_faces.h>
+#include <masonry/brickwork/law_set.h>
 #include <masonry/brickwork/state.h>
 #include <masonry/core/run_context.h>
 
@@ -59,7 +60,7 @@ namespace masonry
       struct Joints;
       struct Specimen;
       class InterfaceElement;
-      class PointStates;
+      struct LawStates;
       class StepController;
     } // namespace model
 
@@ -72,12 +73,10 @@ namespace masonry
       const WalletteSettings &settings;
       /** The output directory, the MPI communicator, summary.json. */
       RunContext &context;
-      /** The laws of the bricks and of the joints. */
-      const BrickMaterial &material;
-      const InterfaceLaw  &law;
-      /** The law of the splitting interfaces through the units (nullptr:
-       * none; their points: splitting_state()). */
-      const InterfaceLaw *splitting_law;
+      /** The laws: one per cell region (units; the mortar of the detailed
+       * model) and one per joint type (bed, head and collar share one; the
+       * splitting interfaces through the units have their own). */
+      const LawSet &laws;
       /** The loading protocol (include <masonry/brickwork/protocol.h>). */
       const Protocol &protocol;
       /** One point per converged step so far (the initial state first). */
@@ -96,11 +95,9 @@ namespace masonry
       const model::System           &system;
       const model::Specimen         &specimen;
       const model::InterfaceElement &element;
-      /** Brick points (8 c + q), joint points (4 n + q) and the points of
-       * the splitting interfaces (4 per face pair, as the joints). */
-      const model::PointStates    &bricks;
-      const model::PointStates    &joint_points;
-      const model::PointStates    &splitting_points;
+      /** The states of the laws' points (brick points 8 c + q by region,
+       * joint points 4 n + q by the law of their type). */
+      const model::LawStates      &states;
       const model::StepController &controller;
       /** @} */
 
@@ -121,37 +118,33 @@ namespace masonry
 
       /**
        * Number of brick points (8 per cell, the Gauss points of cell c are
-       * 8 c + q) and their converged states, in the layout of the brick
-       * material's state_variables() (empty for a linear material). Only
-       * the points of the cells this process owns are current.
+       * 8 c + q) and their converged states, in the layout of the
+       * state_variables() of the law of the cell's region,
+       * brick_law_of(c) (empty for a linear law). Only the points of the
+       * cells this process owns are current.
        */
       unsigned int
       n_brick_points() const;
       ConstStateView
       brick_state(const unsigned int point) const;
+      /** The law of cell @p c (that of its region). */
+      const BrickMaterial &
+      brick_law_of(const unsigned int c) const;
 
       /**
-       * Number of joint points (4 per face pair n: 4 n + q) and their
-       * converged states, in the layout of the interface law's
-       * state_variables(). Only the points of the face pairs this process
+       * Number of joint points (4 per face pair n: 4 n + q, splitting
+       * interfaces included) and their converged states, in the layout of
+       * the state_variables() of the law of the face's type,
+       * joint_law_of(n). Only the points of the face pairs this process
        * owns are current.
        */
       unsigned int
       n_joint_points() const;
       ConstStateView
       joint_state(const unsigned int point) const;
-
-      /**
-       * Number of points of the splitting interfaces (4 per face pair n of
-       * type model::splitting_type: 4 n + q, numbered as the joint points;
-       * 0 without splitting interfaces) and their converged states, in the
-       * layout of splitting_law's state_variables(). Only the points of
-       * the face pairs this process owns are current.
-       */
-      unsigned int
-      n_splitting_points() const;
-      ConstStateView
-      splitting_state(const unsigned int point) const;
+      /** The law of face pair @p n (that of its type). */
+      const InterfaceLaw &
+      joint_law_of(const unsigned int n) const;
 
       /** The output entries of the run (`Output format', ...). */
       const OutputSettings &
@@ -232,16 +225,20 @@ namespace masonry
                    const dealii::SymmetricTensor<2, 3, double> &eps) const;
 
       /**
-       * The position of the state variable @p name in the brick material's
-       * state (state_variables()): its first double in brick_state(p).
-       * Throws an error naming @p name and the variables there are if the
-       * material has no such variable.
+       * The position of the state variable @p name in the state of the law
+       * of cell region @p region (its state_variables()): its first double
+       * in brick_state(p) of the cells of that region. Throws an error
+       * naming @p name and the variables there are if the law has no such
+       * variable.
        */
       unsigned int
-      brick_state_index(const std::string &name) const;
-      /** The same for the interface law of the joints (joint_state(p)). */
+      brick_state_index(const std::string &name,
+                        const unsigned int region = unit_region) const;
+      /** The same for the law of joint type @p type (InterfaceFace::type;
+       * joint_state(p) of the faces of that type). */
       unsigned int
-      joint_state_index(const std::string &name) const;
+      joint_state_index(const std::string &name,
+                        const unsigned int type = 0) const;
       /** @} */
     };
   } // namespace brickwork

@@ -155,12 +155,10 @@ namespace masonry
         // of a linear material, the cells of a nonlinear one while they
         // stay elastic
         const System &system = parts.system;
-        // the initial stiffness of each region (units, mortar)
-        BrickPoint unit_point, mortar_point;
-        mortar_point.region               = 1;
-        const SymmetricTensor<4, 3> Cs[2] = {
-          parts.material.elastic_stiffness_at(unit_point),
-          parts.material.elastic_stiffness_at(mortar_point)};
+        // the initial stiffness of each region's law (units, mortar)
+        std::vector<SymmetricTensor<4, 3>> Cs;
+        for (unsigned int r = 0; r < parts.laws.n_regions(); ++r)
+          Cs.push_back(parts.laws.brick_law(r).elastic_stiffness());
         QGauss<3>   quadrature(2);
         FEValues<3> fe_values(system.fe,
                               quadrature,
@@ -180,7 +178,7 @@ namespace masonry
           if (cell->is_locally_owned())
             {
               const unsigned int region =
-                parts.specimen.cell_region[cell->active_cell_index()];
+                parts.region_of(cell->active_cell_index());
               const SymmetricTensor<4, 3> &C = Cs[region];
               std::vector<long>            shape{long(region)};
               for (unsigned int v = 1; v < 8; ++v)
@@ -248,9 +246,9 @@ namespace masonry
           if (faces[n].owned)
             {
               const auto &face = faces[n];
-              // the splitting interfaces (axis 0 or 1) have their own law
+              // by the face's law (its slot) and normal axis
               const unsigned int key =
-                face.type == splitting_type ? 3 + face.axis : face.axis;
+                3 * parts.laws.slot_of_type(face.type) + face.axis;
               auto &m = interface_matrices[std::make_pair(
                 key, std::lround(face.area * 1e12))];
               if (m.m() == 0)
@@ -276,7 +274,6 @@ namespace masonry
         BrickPoint point;
         point.characteristic_length = parts.specimen.cell_length[c];
         point.strength_factor       = parts.specimen.cell_factor[c];
-        point.region                = parts.specimen.cell_region[c];
         point.time_step             = time_step;
         return point;
       }
@@ -290,15 +287,14 @@ namespace masonry
         system.f_int      = 0;
         non_finite_bits   = 0;
         const bool linear_model =
-          parts.material.is_linear() && parts.law.is_linear() &&
-          (!parts.splitting_law || parts.splitting_law->is_linear());
+          parts.laws.bricks_linear() && parts.laws.joints_linear();
         const bool with_matrix = need_matrix && !(linear_model && matrix_valid);
         is_initial             = true;
         // elastic bricks and nonlinear joints: the bricks' part of the
         // matrix never changes (until cells are deleted), so it is kept
         // and copied instead of summed cell by cell every iteration
         const bool keep_bricks =
-          parts.material.is_linear() && !linear_model && with_matrix;
+          parts.laws.bricks_linear() && !linear_model && with_matrix;
         bool bricks_assembled = false;
         if (with_matrix)
           {
@@ -331,7 +327,8 @@ namespace masonry
             // keeps the matrix regular (their increments are constrained)
             if (!system.orphans.empty())
               {
-                const double scale = parts.material.youngs_modulus() * spacing;
+                const double scale =
+                  parts.laws.brick_law(unit_region).youngs_modulus() * spacing;
                 for (const auto i : system.orphans)
                   if (system.owned.is_element(i))
                     system.matrix.set(i, i, scale);
@@ -347,10 +344,9 @@ namespace masonry
                                  const bool   bricks_assembled,
                                  const double time_step)
       {
-        System               &system   = parts.system;
-        const BrickMaterial  &material = parts.material;
-        const bool            linear   = material.is_linear();
-        const System::Vector &ghosted  = system.ghosted;
+        System               &system  = parts.system;
+        const bool            linear  = parts.laws.bricks_linear();
+        const System::Vector &ghosted = system.ghosted;
         // the cells' laws on the threads, the sums into f_int and the
         // matrix in the order of the cells (results independent of the
         // number of threads)
@@ -373,8 +369,12 @@ namespace masonry
               cell_strains(geometry, s.ue, s.strain);
               elastic = true;
               for (unsigned int q = 0; q < 8 && elastic; ++q)
-                elastic = parts.integrator.brick_is_elastic(
-                  material, s.strain[q], parts.bricks, 8 * c + q, point);
+                elastic =
+                  parts.integrator.brick_is_elastic(parts.brick_law(c),
+                                                    s.strain[q],
+                                                    parts.brick_states(c),
+                                                    8 * c + q,
+                                                    point);
             }
           if (elastic)
             {
@@ -383,7 +383,7 @@ namespace masonry
               copy.cached->vmult(copy.f, s.ue);
               if (!linear)
                 for (unsigned int q = 0; q < 8; ++q)
-                  parts.bricks.keep(8 * c + q);
+                  parts.brick_states(c).keep(8 * c + q);
             }
           else
             {
@@ -476,9 +476,9 @@ namespace masonry
           ke = 0;
         for (unsigned int q = 0; q < 8; ++q)
           {
-            parts.integrator.brick_response(parts.material,
+            parts.integrator.brick_response(parts.brick_law(c),
                                             strain[q],
-                                            parts.bricks,
+                                            parts.brick_states(c),
                                             8 * c + q,
                                             point,
                                             stress,

@@ -9,6 +9,7 @@
 
 #include <masonry/brickwork/brick_material.h>
 #include <masonry/brickwork/interface_law.h>
+#include <masonry/brickwork/law_set.h>
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/fe/fe_values.h>
@@ -65,34 +66,44 @@ namespace masonry
       /** The parts an assembly reads and the states it writes. */
       struct AssemblyParts
       {
-        System              &system;
-        const Joints        &joints;
-        const Specimen      &specimen;
-        const BrickMaterial &material;
-        const InterfaceLaw  &law;
-        const Integrator    &integrator;
-        /** Brick points: 8 per active cell (index 8 c + q). */
-        PointStates &bricks;
-        /** Joint points: 4 per face (index 4 n + q). */
-        PointStates &joint_points;
-        /** The law of the splitting interfaces (nullptr: none). */
-        const InterfaceLaw *splitting_law;
-        /** Their points, indexed like joint_points (only the splitting
-         * faces' entries are used). */
-        PointStates &splitting_points;
+        System           &system;
+        const Joints     &joints;
+        const Specimen   &specimen;
+        const LawSet     &laws;
+        const Integrator &integrator;
+        /** The states of the laws' points: brick points 8 c + q, joint
+         * points 4 n + q (LawStates). */
+        LawStates &states;
 
+        /** The region of cell @p c. */
+        unsigned int
+        region_of(const unsigned int c) const
+        {
+          return specimen.cell_region[c];
+        }
+        /** The law of cell @p c. */
+        const BrickMaterial &
+        brick_law(const unsigned int c) const
+        {
+          return laws.brick_law(region_of(c));
+        }
+        /** The point states of cell @p c. */
+        PointStates &
+        brick_states(const unsigned int c) const
+        {
+          return states.bricks[region_of(c)];
+        }
         /** The law of face @p n. */
         const InterfaceLaw &
         law_of(const unsigned int n) const
         {
-          return joints.faces[n].type == splitting_type ? *splitting_law : law;
+          return laws.joint_law(joints.faces[n].type);
         }
         /** The point states of face @p n. */
         PointStates &
         states_of(const unsigned int n) const
         {
-          return joints.faces[n].type == splitting_type ? splitting_points :
-                                                          joint_points;
+          return states.joints[laws.slot_of_type(joints.faces[n].type)];
         }
       };
 

@@ -120,6 +120,27 @@ namespace masonry
         std::vector<double> old_values, new_values, older_values, frozen_values;
         std::vector<unsigned int> checkpointed;
       };
+
+      /** The point states of the laws of a LawSet, indexed as its laws:
+       * brick points by cell region (8 c + q: every region's states hold
+       * every cell's points, a cell uses those of its region), joint points
+       * by slot (4 n + q: every slot's states hold every face's points, a
+       * face uses those of its type's slot). */
+      struct LawStates
+      {
+        std::vector<PointStates> bricks, joints;
+
+        /** Write or read every law's states (PointStates::serialize()). */
+        template <class Archive>
+        void
+        serialize(Archive &ar, const unsigned int)
+        {
+          for (PointStates &s : bricks)
+            ar &s;
+          for (PointStates &s : joints)
+            ar &s;
+        }
+      };
     } // namespace model
   }   // namespace brickwork
 } // namespace masonry

@@ -93,7 +93,8 @@ namespace masonry
       void
       Assembler::update_nonlocal_factors()
       {
-        const BrickMaterial  &material = parts.material;
+        // the units' law (the mortar's is local: LawSet)
+        const BrickMaterial  &material = parts.laws.brick_law(unit_region);
         System               &system   = parts.system;
         const System::Vector &ghosted  = system.ghosted;
         if (material.nonlocal_length() > 0)
@@ -107,7 +108,7 @@ namespace masonry
                                           material,
                                           system.dof_handler,
                                           ghosted,
-                                          parts.bricks,
+                                          parts.states.bricks[unit_region],
                                           parts.specimen,
                                           system.comm);
           }
@@ -116,9 +117,8 @@ namespace masonry
       double
       Assembler::update_brick_states(const double time_step)
       {
-        const BrickMaterial  &material = parts.material;
-        const System::Vector &ghosted  = parts.system.ghosted;
-        double                error    = 0;
+        const System::Vector &ghosted = parts.system.ghosted;
+        double                error   = 0;
         struct BrickScratch : DamageScratch
         {
           std::vector<types::global_dof_index> dofs =
@@ -139,7 +139,9 @@ namespace masonry
           for (unsigned int i = 0; i < 24; ++i)
             s.ue[i] = ghosted[s.dofs[i]];
           cell_strains(geometries[geometry_of_cell[c]], s.ue, s.eps);
-          BrickPoint            point = brick_point(c, time_step);
+          BrickPoint            point    = brick_point(c, time_step);
+          const BrickMaterial  &material = parts.brick_law(c);
+          PointStates          &states   = parts.brick_states(c);
           SymmetricTensor<2, 3> stress;
           for (unsigned int q = 0; q < 8; ++q)
             {
@@ -149,13 +151,10 @@ namespace masonry
                   point.tensile_factor     = rho[0][p];
                   point.compressive_factor = rho[1][p];
                 }
-              material.update_state(s.eps[q],
-                                    parts.bricks.old(p),
-                                    point,
-                                    parts.bricks.updated(p),
-                                    stress);
+              material.update_state(
+                s.eps[q], states.old(p), point, states.updated(p), stress);
               damage_change(
-                parts.integrator, 2, material, parts.bricks, p, s, change);
+                parts.integrator, 2, material, states, p, s, change);
             }
         };
         run_guarded(parts.system.dof_handler.begin_active(),
@@ -220,7 +219,7 @@ namespace masonry
         // the units' factors of the nonlocal average (empty: local)
         update_nonlocal_factors();
         double error = 0;
-        if (!parts.material.is_linear())
+        if (!parts.laws.bricks_linear())
           error = update_brick_states(time_step);
         error = std::max(error, update_joint_states(time_step));
         gather_non_finite();

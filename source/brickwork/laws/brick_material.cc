@@ -57,12 +57,6 @@ namespace masonry
              2 * mu * dealii::identity_tensor<3>();
     }
 
-    dealii::SymmetricTensor<4, 3>
-    BrickMaterial::elastic_stiffness_at(const BrickPoint &) const
-    {
-      return elastic_stiffness();
-    }
-
     void
     BrickMaterial::evaluate(const dealii::SymmetricTensor<2, 3> &strain,
                             ConstStateView                       old,

@@ -102,8 +102,8 @@ namespace masonry
               out << "\n";
             }
           out << "*MATERIAL, NAME=BRICK\n*ELASTIC\n"
-              << view.material.youngs_modulus() << ", "
-              << view.material.poissons_ratio()
+              << view.laws.brick_law(unit_region).youngs_modulus() << ", "
+              << view.laws.brick_law(unit_region).poissons_ratio()
               << "\n*SOLID SECTION, ELSET=EALL, MATERIAL=BRICK\n"
               << "*STEP\n*STATIC\n*BOUNDARY\n";
           for (unsigned int d = 0; d < 3; ++d)

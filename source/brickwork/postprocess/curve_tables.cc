@@ -187,7 +187,7 @@ namespace masonry
                 out << "step,displacement_m,strain,force_N,stress_Pa,"
                        "newton_iterations,max_damage,gauge_strain,cycle,"
                        "unloading,deleted_cells";
-                for (const auto &name : view.material.damage_names())
+                for (const auto &name : view.laws.brick_damage_names())
                   out << ",brick_" << name;
                 out << "\n";
               }
@@ -196,8 +196,9 @@ namespace masonry
                 << p.force << "," << p.stress << "," << p.newton << ","
                 << p.max_damage << "," << p.gauge_strain << "," << p.cycle
                 << "," << p.unloading << "," << p.deleted;
-            for (unsigned int k = 0; k < view.material.damage_names().size();
-                 ++k)
+            const unsigned int n_damages =
+              view.laws.brick_damage_names().size();
+            for (unsigned int k = 0; k < n_damages; ++k)
               out << ","
                   << (k < p.brick_damages.size() ? p.brick_damages[k] : 0.);
             out << "\n";

@@ -120,18 +120,19 @@ namespace masonry
           const TrilinosWrappers::MPI::Vector u = view.solution();
           const MPI_Comm comm                   = view.context.mpi_communicator;
           // this rank's cells and open faces
-          const BrickMaterial &material = view.material;
-          const unsigned int   n_damage =
-            material.is_linear() ? 0 : material.damage_names().size();
-          std::vector<double> damage(n_damage);
+          std::vector<double> damage;
           for (const auto &cell : view.dof_handler().active_cell_iterators())
             if (cell->is_locally_owned())
               {
-                const unsigned int c = cell->active_cell_index();
+                const unsigned int   c        = cell->active_cell_index();
+                const BrickMaterial &material = view.brick_law_of(c);
+                damage.resize(
+                  material.is_linear() ? 0 : material.damage_names().size());
                 cells.push_back(view.cell_deleted(c));
-                // mean over the cell's points of the largest damage
+                // mean over the cell's points of the largest damage of the
+                // law of its region
                 double d = 0;
-                if (n_damage > 0)
+                if (!damage.empty())
                   for (unsigned int q = 0; q < 8; ++q)
                     {
                       material.damages(view.brick_state(8 * c + q), damage);
@@ -190,12 +191,13 @@ namespace masonry
                                 const std::vector<double> &faces,
                                 const double               factor) const
         {
-          const BrickMaterial &material = view.material;
-          const unsigned int   n_damage =
-            material.is_linear() ? 0 : material.damage_names().size();
-          const unsigned int n_cells = cells.size() / cell_size;
-          const unsigned int n_open  = faces.size() / face_size;
-          const CurvePoint  &last    = view.curve.back();
+          const std::vector<std::string> names =
+            view.laws.bricks_linear() ? std::vector<std::string>() :
+                                        view.laws.brick_damage_names();
+          const unsigned int n_damage = names.size();
+          const unsigned int n_cells  = cells.size() / cell_size;
+          const unsigned int n_open   = faces.size() / face_size;
+          const CurvePoint  &last     = view.curve.back();
           // the picture's data, for wallette_failure.py and the user
           Json data                 = Json::object();
           data["width"]             = width;
@@ -205,12 +207,8 @@ namespace masonry
           data["strain"]            = last.strain;
           data["stress"]            = last.stress;
           std::string damage        = n_damage > 0 ? "largest of " : "none";
-          if (n_damage > 0)
-            {
-              const auto names = material.damage_names();
-              for (unsigned int k = 0; k < names.size(); ++k)
-                damage += (k ? ", " : "") + names[k];
-            }
+          for (unsigned int k = 0; k < n_damage; ++k)
+            damage += (k ? ", " : "") + names[k];
           data["damage"] = damage;
           Json rows      = Json::array();
           for (unsigned int c = 0; c < n_cells; ++c)

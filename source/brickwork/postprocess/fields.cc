@@ -107,21 +107,27 @@ namespace masonry
                             std::vector<Vector<float>>          &fields,
                             std::vector<std::string>            &names) const
         {
-          const BrickMaterial &material = view.material;
-          const unsigned int   n_cells  = view.triangulation().n_active_cells();
-          const std::vector<std::string> reported =
-            material.is_linear() ? std::vector<std::string>() :
-                                   material.reported_quantities();
-          names = {"stress_xx",
-                   "stress_yy",
-                   "stress_zz",
-                   "stress_xy",
-                   "stress_yz",
-                   "stress_xz",
-                   "subdomain"};
-          names.insert(names.end(), reported.begin(), reported.end());
-          const unsigned int first_reported = 7;
-          const bool         fading         = view.fades_cells();
+          const LawSet      &laws    = view.laws;
+          const unsigned int n_cells = view.triangulation().n_active_cells();
+          names                      = {"stress_xx",
+                                        "stress_yy",
+                                        "stress_zz",
+                                        "stress_xy",
+                                        "stress_yz",
+                                        "stress_xz",
+                                        "subdomain"};
+          // the quantities each region's law reports, with the region's
+          // prefix (0 in the cells of the other regions)
+          std::vector<unsigned int> first_reported;
+          for (unsigned int r = 0; r < laws.n_regions(); ++r)
+            {
+              first_reported.push_back(names.size());
+              const BrickMaterial &law = laws.brick_law(r);
+              if (!law.is_linear())
+                for (const auto &name : law.reported_quantities())
+                  names.push_back(laws.region(r).prefix + name);
+            }
+          const bool fading = view.fades_cells();
           if (fading)
             names.emplace_back("fade");
           if (view.deletes_cells())
@@ -141,7 +147,7 @@ namespace masonry
                                 update_gradients);
           std::vector<SymmetricTensor<2, 3>> eps(8);
           const FEValuesExtractors::Vector   displacement(0);
-          std::vector<double>                values(reported.size());
+          std::vector<double>                values;
           for (const auto &cell : view.dof_handler().active_cell_iterators())
             if (cell->is_locally_owned())
               {
@@ -159,6 +165,10 @@ namespace masonry
                 fe_values.reinit(cell);
                 fe_values[displacement].get_function_symmetric_gradients(
                   ghosted, eps);
+                const BrickMaterial &law = view.brick_law_of(c);
+                const unsigned int first = first_reported[view.cell_region(c)];
+                if (!law.is_linear())
+                  values.resize(law.reported_quantities().size());
                 SymmetricTensor<2, 3> mean;
                 for (unsigned int q = 0; q < 8; ++q)
                   {
@@ -166,11 +176,11 @@ namespace masonry
                     // same)
                     mean +=
                       view.cell_fade(c) * view.brick_stress(c, q, eps[q]) / 8;
-                    if (!material.is_linear())
+                    if (!law.is_linear())
                       {
-                        material.report(view.brick_state(8 * c + q), values);
+                        law.report(view.brick_state(8 * c + q), values);
                         for (unsigned int k = 0; k < values.size(); ++k)
-                          fields[first_reported + k][c] += values[k] / 8;
+                          fields[first + k][c] += values[k] / 8;
                       }
                   }
                 const unsigned int ij[6][2] = {

@@ -80,23 +80,28 @@ namespace masonry
         JointFields::face_values(const ModelView          &view,
                                  std::vector<std::string> &names) const
         {
-          const auto        &faces   = view.joints.faces;
-          const unsigned int n       = faces.size();
-          const unsigned int n_quad  = model::joint_face_points;
-          names                      = view.law.reported_quantities();
-          const unsigned int n_joint = names.size();
-          // the splitting interfaces' quantities follow, prefixed (zero on
-          // the joints, and the joints' zero on them)
-          if (view.splitting_law)
-            for (const auto &name : view.splitting_law->reported_quantities())
-              names.push_back("splitting_" + name);
+          const auto        &faces  = view.joints.faces;
+          const unsigned int n      = faces.size();
+          const unsigned int n_quad = model::joint_face_points;
+          const LawSet      &laws   = view.laws;
+          // the quantities of each joint law, with its prefix (zero on the
+          // faces of the other laws)
+          names.clear();
+          std::vector<unsigned int> first_reported;
+          for (unsigned int slot = 0; slot < laws.n_joint_laws(); ++slot)
+            {
+              first_reported.push_back(names.size());
+              for (const auto &name :
+                   laws.joint(slot).law->reported_quantities())
+                names.push_back(laws.joint(slot).prefix + name);
+            }
           const unsigned int n_reported = names.size();
+          const bool         split = laws.has_joint_law(model::splitting_type);
           names.insert(names.end(),
                        {"normal_opening",
                         "slip",
-                        view.splitting_law ?
-                          "joint_type_bed0_head1_collar2_splitting3" :
-                          "joint_type_bed0_head1_collar2"});
+                        split ? "joint_type_bed0_head1_collar2_splitting3" :
+                                "joint_type_bed0_head1_collar2"});
           std::vector<std::vector<double>>    values(names.size(),
                                                   std::vector<double>(n, 0));
           const TrilinosWrappers::MPI::Vector ghosted = view.solution();
@@ -104,18 +109,15 @@ namespace masonry
           for (unsigned int i = 0; i < n; ++i)
             if (faces[i].owned)
               {
-                const auto         &face  = faces[i];
-                const unsigned int  a     = face.axis;
-                const bool          split = face.type == model::splitting_type;
-                const InterfaceLaw &law =
-                  split ? *view.splitting_law : view.law;
-                const unsigned int first = split ? n_joint : 0;
+                const auto         &face = faces[i];
+                const unsigned int  a    = face.axis;
+                const InterfaceLaw &law  = view.joint_law_of(i);
+                const unsigned int  first =
+                  first_reported[laws.slot_of_type(face.type)];
                 reported.resize(law.reported_quantities().size());
                 for (unsigned int q = 0; q < n_quad; ++q)
                   {
-                    law.report(split ? view.splitting_state(n_quad * i + q) :
-                                       view.joint_state(n_quad * i + q),
-                               reported);
+                    law.report(view.joint_state(n_quad * i + q), reported);
                     for (unsigned int k = 0; k < reported.size(); ++k)
                       values[first + k][i] += reported[k] / n_quad;
                   }

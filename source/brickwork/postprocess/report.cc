@@ -20,22 +20,25 @@ namespace masonry
       using namespace dealii;
 
       void
-      describe_model(const ModelView &view, const BrickMaterial *mortar)
+      describe_model(const ModelView &view)
       {
-        const Geometry &geometry  = view.geometry;
+        const LawSet        &laws     = view.laws;
+        const BrickMaterial *mortar   = laws.n_regions() > mortar_region ?
+                                          &laws.brick_law(mortar_region) :
+                                          nullptr;
+        const Geometry      &geometry = view.geometry;
         const auto &triangulation = view.system.dof_handler.get_triangulation();
         const auto &settings      = view.settings;
-        const Joints       &joints        = view.joints;
-        const InterfaceLaw *splitting_law = view.splitting_law;
-        ConditionalOStream &pcout         = view.context.pcout;
-        Json               &summary       = view.context.summary;
-        summary["n_bricks"]               = geometry.n_bricks;
-        summary["n_cells"]                = triangulation.n_active_cells();
-        summary["n_dofs"]                 = view.system.dof_handler.n_dofs();
-        summary["height"]                 = geometry.height;
-        summary["length"]                 = geometry.length;
-        summary["thickness"]              = geometry.thickness;
-        summary["gross_area"]             = geometry.gross_area;
+        const Joints       &joints  = view.joints;
+        ConditionalOStream &pcout   = view.context.pcout;
+        Json               &summary = view.context.summary;
+        summary["n_bricks"]         = geometry.n_bricks;
+        summary["n_cells"]          = triangulation.n_active_cells();
+        summary["n_dofs"]           = view.system.dof_handler.n_dofs();
+        summary["height"]           = geometry.height;
+        summary["length"]           = geometry.length;
+        summary["thickness"]        = geometry.thickness;
+        summary["gross_area"]       = geometry.gross_area;
         const auto &nf = joints.n_faces_of_type, &nj = joints.n_joints_of_type;
         for (unsigned int t = 0; t < 3; ++t)
           {
@@ -89,7 +92,7 @@ namespace masonry
                         << settings.mesh.collar_bed_gap << " m on each side)\n";
               }
           }
-        if (splitting_law)
+        if (laws.has_joint_law(splitting_type))
           {
             const unsigned int t                   = splitting_type;
             summary["n_split_units"]               = geometry.n_split_units;
@@ -99,17 +102,20 @@ namespace masonry
                   << " face pairs\n";
           }
         // every value a law computed from its inputs
+        const BrickMaterial &units = laws.brick_law(unit_region);
+        const InterfaceLaw  &law   = laws.joint_law(0);
         const std::pair<const char *, std::vector<DerivedValue>> derived[] = {
-          {"brick_material", view.material.derived_values()},
+          {"brick_material", units.derived_values()},
           {"mortar_material",
            mortar ? mortar->derived_values() : std::vector<DerivedValue>()},
-          {"interface_law", view.law.derived_values()},
+          {"interface_law", law.derived_values()},
           {"splitting_interfaces",
-           splitting_law ? splitting_law->derived_values() :
-                           std::vector<DerivedValue>()},
+           laws.has_joint_law(splitting_type) ?
+             laws.joint_law(splitting_type).derived_values() :
+             std::vector<DerivedValue>()},
           {"detailed_model",
            detailed_values(
-             view.material, mortar, view.law, settings.mesh.mortar_thickness)}};
+             units, mortar, law, settings.mesh.mortar_thickness)}};
         for (const auto &[part, values] : derived)
           {
             if (values.empty())
@@ -164,9 +170,9 @@ namespace masonry
       std::pair<double, std::vector<double>>
       max_damages(const ModelView &view)
       {
-        const MPI_Comm       comm     = view.context.mpi_communicator;
-        const Joints        &joints   = view.joints;
-        const BrickMaterial &material = view.material;
+        const MPI_Comm comm       = view.context.mpi_communicator;
+        const Joints  &joints     = view.joints;
+        const LawSet  &laws       = view.laws;
         const auto &triangulation = view.system.dof_handler.get_triangulation();
         std::vector<double> d;
         double              joint = 0;
@@ -174,31 +180,37 @@ namespace masonry
         for (unsigned int n = 0; n < joints.faces.size(); ++n)
           if (joints.faces[n].owned)
             {
-              const bool split      = joints.faces[n].type == splitting_type;
-              const InterfaceLaw &l = split ? *view.splitting_law : view.law;
-              const PointStates  &states =
-                split ? view.splitting_points : view.joint_points;
+              const InterfaceLaw &l = view.joint_law_of(n);
               d.resize(l.damage_names().size());
               for (unsigned int q = 0; q < InterfaceElement::n_points; ++q)
                 {
-                  l.damages(states.old(InterfaceElement::n_points * n + q), d);
+                  l.damages(view.joint_state(InterfaceElement::n_points * n +
+                                             q),
+                            d);
                   for (const double x : d)
                     joint = std::max(joint, x);
                 }
             }
-        const unsigned int  n_brick = material.damage_names().size();
-        std::vector<double> brick(n_brick, 0.), b(n_brick);
-        if (!material.is_linear())
+        // each region's damages in their columns (0 over the other
+        // regions' cells)
+        std::vector<double> brick(laws.brick_damage_names().size(), 0.), b;
+        if (!laws.bricks_linear())
           for (const auto &cell : triangulation.active_cell_iterators())
-            if (cell->is_locally_owned() &&
-                !view.specimen.deleted[cell->active_cell_index()])
+            {
+              const unsigned int c = cell->active_cell_index();
+              if (!cell->is_locally_owned() || view.specimen.deleted[c])
+                continue;
+              const BrickMaterial &law = view.brick_law_of(c);
+              const unsigned int   first =
+                laws.first_brick_damage(view.cell_region(c));
+              b.resize(law.damage_names().size());
               for (unsigned int q = 0; q < 8; ++q)
                 {
-                  material.damages(
-                    view.bricks.old(8 * cell->active_cell_index() + q), b);
-                  for (unsigned int k = 0; k < n_brick; ++k)
-                    brick[k] = std::max(brick[k], b[k]);
+                  law.damages(view.brick_state(8 * c + q), b);
+                  for (unsigned int k = 0; k < b.size(); ++k)
+                    brick[first + k] = std::max(brick[first + k], b[k]);
                 }
+            }
         for (auto &x : brick)
           x = Utilities::MPI::max(x, comm);
         return {Utilities::MPI::max(joint, comm), brick};

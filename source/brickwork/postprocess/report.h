@@ -24,12 +24,10 @@ namespace masonry
       /**
        * The model's size, joints, detailed model and splitting interfaces
        * and every value a law computed from its inputs, into summary.json
-       * and on the screen. @p mortar: the mortar's own law (the detailed
-       * model; `view.material' then holds units and mortar), nullptr: the
-       * simplified model.
+       * and on the screen.
        */
       void
-      describe_model(const ModelView &view, const BrickMaterial *mortar);
+      describe_model(const ModelView &view);
 
       /**
        * The detailed model's derived values (none with @p mortar nullptr):

@@ -70,25 +70,38 @@ namespace masonry
     unsigned int
     ModelView::n_brick_points() const
     {
-      return bricks.n_points();
+      return 8 * system.triangulation.n_active_cells();
     }
 
     ConstStateView
     ModelView::brick_state(const unsigned int point) const
     {
-      return bricks.old(point);
+      return states.bricks[cell_region(point / 8)].old(point);
+    }
+
+    const BrickMaterial &
+    ModelView::brick_law_of(const unsigned int c) const
+    {
+      return laws.brick_law(cell_region(c));
     }
 
     unsigned int
     ModelView::n_joint_points() const
     {
-      return joint_points.n_points();
+      return model::joint_face_points * joints.faces.size();
     }
 
     ConstStateView
     ModelView::joint_state(const unsigned int point) const
     {
-      return joint_points.old(point);
+      const unsigned int n = point / model::joint_face_points;
+      return states.joints[laws.slot_of_type(joints.faces[n].type)].old(point);
+    }
+
+    const InterfaceLaw &
+    ModelView::joint_law_of(const unsigned int n) const
+    {
+      return laws.joint_law(joints.faces[n].type);
     }
 
     const dealii::Triangulation<3, 3> &
@@ -147,18 +160,6 @@ namespace masonry
       return settings.mesh.detailed;
     }
 
-    unsigned int
-    ModelView::n_splitting_points() const
-    {
-      return splitting_points.n_points();
-    }
-
-    ConstStateView
-    ModelView::splitting_state(const unsigned int point) const
-    {
-      return splitting_points.old(point);
-    }
-
     const OutputSettings &
     ModelView::output_settings() const
     {
@@ -171,7 +172,7 @@ namespace masonry
       const unsigned int                           q,
       const dealii::SymmetricTensor<2, 3, double> &eps) const
     {
-      return model::converged_stress(material, eps, bricks, specimen, c, q);
+      return model::converged_stress(laws, eps, states, specimen, c, q);
     }
 
     const std::vector<DeletedCell> &
@@ -193,15 +194,22 @@ namespace masonry
     }
 
     unsigned int
-    ModelView::brick_state_index(const std::string &name) const
+    ModelView::brick_state_index(const std::string &name,
+                                 const unsigned int region) const
     {
-      return state_index(material.state_variables(), name, "brick material");
+      return state_index(laws.brick_law(region).state_variables(),
+                         name,
+                         "law of `" + laws.region(region).entry + "'");
     }
 
     unsigned int
-    ModelView::joint_state_index(const std::string &name) const
+    ModelView::joint_state_index(const std::string &name,
+                                 const unsigned int type) const
     {
-      return state_index(law.state_variables(), name, "interface law");
+      const auto &entry = laws.joint(laws.slot_of_type(type));
+      return state_index(entry.law->state_variables(),
+                         name,
+                         "law of `" + entry.entry + "'");
     }
   } // namespace brickwork
 } // namespace masonry

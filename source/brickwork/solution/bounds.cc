@@ -23,18 +23,17 @@ namespace masonry
       }
 
       std::array<double, 2>
-      bound_materials(const BrickMaterial &material,
-                      const BrickMaterial *mortar)
+      bound_materials(const LawSet &laws)
       {
         std::array<double, 2> bound = {{0., 0.}};
-        for (const BrickMaterial *m : {&material, mortar})
-          if (m != nullptr)
-            {
-              bound[0]     = std::max(bound[0], m->compressive_strength());
-              const auto C = m->elastic_stiffness();
-              for (unsigned int i = 0; i < 3; ++i)
-                bound[1] = std::max(bound[1], C[i][i][i][i]);
-            }
+        for (unsigned int r = 0; r < laws.n_regions(); ++r)
+          {
+            const BrickMaterial &m = laws.brick_law(r);
+            bound[0]     = std::max(bound[0], m.compressive_strength());
+            const auto C = m.elastic_stiffness();
+            for (unsigned int i = 0; i < 3; ++i)
+              bound[1] = std::max(bound[1], C[i][i][i][i]);
+          }
         return bound;
       }
 

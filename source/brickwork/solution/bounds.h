@@ -8,6 +8,7 @@
 #define masonry_brickwork_model_bounds_h
 
 #include <masonry/brickwork/curve.h>
+#include <masonry/brickwork/law_set.h>
 
 #include <array>
 #include <string>
@@ -44,12 +45,11 @@ namespace masonry
 
       /**
        * The largest compressive strength and the largest constrained
-       * modulus C_iiii (Pa) of @p material and @p mortar (may be null): the
+       * modulus C_iiii (Pa) of the laws of the cell regions in @p laws: the
        * strength and modulus of stress_bound().
        */
       std::array<double, 2>
-      bound_materials(const BrickMaterial &material,
-                      const BrickMaterial *mortar);
+      bound_materials(const LawSet &laws);
 
       /**
        * Empty if |stress| <= stress_bound(strength, modulus, strain), else

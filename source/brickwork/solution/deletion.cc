@@ -201,14 +201,17 @@ namespace masonry
       }
 
       SymmetricTensor<2, 3>
-      converged_stress(const BrickMaterial         &material,
+      converged_stress(const LawSet                &laws,
                        const SymmetricTensor<2, 3> &eps,
-                       const PointStates           &bricks,
+                       const LawStates             &states,
                        const Specimen              &specimen,
                        const unsigned int           c,
                        const unsigned int           q)
       {
-        std::vector<double> initial(bricks.n_values()),
+        const unsigned int   region   = specimen.cell_region[c];
+        const BrickMaterial &material = laws.brick_law(region);
+        const PointStates   &bricks   = states.bricks[region];
+        std::vector<double>  initial(bricks.n_values()),
           scratch(bricks.n_values());
         const bool linear = material.is_linear();
         if (linear)
@@ -216,7 +219,6 @@ namespace masonry
         BrickPoint point;
         point.characteristic_length = specimen.cell_length[c];
         point.strength_factor       = specimen.cell_factor[c];
-        point.region                = specimen.cell_region[c];
         // the factors the step evaluated the law with: with the local
         // measures instead, a point that the average keeps inside its
         // envelope would crack or crush here
@@ -235,8 +237,8 @@ namespace masonry
       SymmetricTensor<2, 3>
       cell_stress(const DoFHandler<3>::active_cell_iterator &cell,
                   const System::Vector                      &ghosted,
-                  const BrickMaterial                       &material,
-                  const PointStates                         &bricks,
+                  const LawSet                              &laws,
+                  const LawStates                           &states,
                   const Specimen                            &specimen,
                   FEValues<3>                               &fe_values)
       {
@@ -249,7 +251,7 @@ namespace masonry
                  fe_values,
                  eps,
                  [&](const unsigned int q, const SymmetricTensor<2, 3> &e) {
-                   return converged_stress(material, e, bricks, specimen, c, q);
+                   return converged_stress(laws, e, states, specimen, c, q);
                  });
       }
 
@@ -278,14 +280,14 @@ namespace masonry
         candidate_cell(const DoFHandler<3>::active_cell_iterator &cell,
                        const double                               e1,
                        const System::Vector                      &ghosted,
-                       const BrickMaterial                       &material,
-                       const PointStates                         &bricks,
+                       const LawSet                              &laws,
+                       const LawStates                           &states,
                        const Specimen                            &specimen,
                        FEValues<3>                               &stress_values)
         {
-          const unsigned int          c     = cell->active_cell_index();
-          const SymmetricTensor<2, 3> sigma = cell_stress(
-            cell, ghosted, material, bricks, specimen, stress_values);
+          const unsigned int          c = cell->active_cell_index();
+          const SymmetricTensor<2, 3> sigma =
+            cell_stress(cell, ghosted, laws, states, specimen, stress_values);
           DeletedCell d;
           d.cell           = c;
           d.region         = specimen.cell_region[c];
@@ -347,8 +349,8 @@ namespace masonry
          * and the shortenings (the displacement: system.u). */
         CellScan
         scan_cells(const DeletionSettings &settings,
-                   const BrickMaterial    &material,
-                   const PointStates      &bricks,
+                   const LawSet           &laws,
+                   const LawStates        &states,
                    System                 &system,
                    const Specimen         &specimen)
         {
@@ -386,8 +388,8 @@ namespace masonry
                   const auto [d, s] = candidate_cell(cell,
                                                      e1,
                                                      system.ghosted,
-                                                     material,
-                                                     bricks,
+                                                     laws,
+                                                     states,
                                                      specimen,
                                                      stress_values);
                   if (settings.deletion_stress <= 0 ||
@@ -478,8 +480,8 @@ namespace masonry
       unsigned int
       delete_cells(const DeletionSettings &settings,
                    const Joints           &joints,
-                   const BrickMaterial    &material,
-                   const PointStates      &bricks,
+                   const LawSet           &laws,
+                   const LawStates        &states,
                    System                 &system,
                    Specimen               &specimen,
                    const DeletionStep     &step,
@@ -491,7 +493,7 @@ namespace masonry
         // the same numbers on one assembly thread as on many (OneThread)
         const OneThread one_thread;
         const CellScan  scan =
-          scan_cells(settings, material, bricks, system, specimen);
+          scan_cells(settings, laws, states, system, specimen);
         share_fades(scan, system, specimen, faded);
         std::vector<DeletedCell> all =
           choose_cells(scan.candidates, settings, system, specimen, faded);

@@ -11,6 +11,7 @@
 #define masonry_brickwork_model_deletion_h
 
 #include <masonry/brickwork/brick_material.h>
+#include <masonry/brickwork/law_set.h>
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/fe/fe_values.h>
@@ -77,15 +78,15 @@ namespace masonry
        * first (Specimen::fade) and are deleted at the end of the fade;
        * with `Deletion stress' > 0 a cell is deleted only once the largest
        * absolute principal value of its cell-averaged stress (of
-       * @p material at the converged states @p bricks) is at most that;
+       * the cells' laws at their converged @p states) is at most that;
        * @p faded: how many fade factors changed. Each deleted cell, with
        * @p step and what it carried, goes into Specimen::deletions.
        */
       unsigned int
       delete_cells(const DeletionSettings &settings,
                    const Joints           &joints,
-                   const BrickMaterial    &material,
-                   const PointStates      &bricks,
+                   const LawSet           &laws,
+                   const LawStates        &states,
                    System                 &system,
                    Specimen               &specimen,
                    const DeletionStep     &step,
@@ -93,28 +94,29 @@ namespace masonry
 
       /** The cell-averaged stress (Pa) of cell @p cell (its fade
        * included) at the displacement @p ghosted: the stress of each
-       * point from its converged state in @p bricks at the converged
+       * point from its converged state in @p states at the converged
        * strain, as solution.pvd shows it. */
       dealii::SymmetricTensor<2, 3>
       cell_stress(const dealii::DoFHandler<3>::active_cell_iterator &cell,
                   const System::Vector                              &ghosted,
-                  const BrickMaterial                               &material,
-                  const PointStates                                 &bricks,
+                  const LawSet                                      &laws,
+                  const LawStates                                   &states,
                   const Specimen                                    &specimen,
                   dealii::FEValues<3>                               &fe_values);
 
       /**
        * The stress of brick point @p q of cell @p c at the strain @p eps
-       * from its converged state (the initial one for a linear material),
-       * with the cell's length, strength factor and region and the step's
+       * by the law of its region from its converged state (the initial one
+       * for a linear law), with the cell's length and strength factor and
+       * the step's
        * nonlocal factors (Specimen::nonlocal_factors): the stress the
        * step left, no further loading, without the cell's fade. What the
        * deletion and the output (solution.pvd) read.
        */
       dealii::SymmetricTensor<2, 3>
-      converged_stress(const BrickMaterial                 &material,
+      converged_stress(const LawSet                        &laws,
                        const dealii::SymmetricTensor<2, 3> &eps,
-                       const PointStates                   &bricks,
+                       const LawStates                     &states,
                        const Specimen                      &specimen,
                        const unsigned int                   c,
                        const unsigned int                   q);
