@@ -126,7 +126,9 @@ namespace
         const auto law = unit("set Nonlocal length = 0.03\n"
                               "set Tensile plastic flow = " +
                               flow + "\n");
-        check(law->nonlocal_length() == 0.03,
+        const masonry::brickwork::NonlocalMeasures *measures =
+          masonry::brickwork::nonlocal_of(*law);
+        check(measures && measures->nonlocal_length() == 0.03,
               "`Nonlocal length' is the law's radius");
         unsigned int n = 0;
         for (const auto &v : law->state_variables())
@@ -140,9 +142,9 @@ namespace
         const double alpha          = 0.16 / 1.32;
         const double tau_c =
           (2 * mu - alpha * (3 * lambda + 2 * mu)) * 1e-4 / (1 - alpha);
-        check(std::abs(law->nonlocal_measures(strain, old, point)[0] -
+        check(std::abs(measures->nonlocal_measures(strain, old, point)[0] -
                        (lambda + 2 * mu) * 1e-4) < 1e-6 &&
-                std::abs(law->nonlocal_measures(-strain, old, point)[1] -
+                std::abs(measures->nonlocal_measures(-strain, old, point)[1] -
                          tau_c) < 1e-6,
               "the measures of e_xx = +-e are (lambda + 2 mu) e and tau_c (" +
                 flow + ")");

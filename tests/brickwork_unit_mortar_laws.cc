@@ -158,7 +158,9 @@ namespace
               stress[j][j] - control.a0 - control.a1 * stress[i][i];
             const double r1 =
               stress[k][k] - control.b0 - control.b1 * stress[i][i];
-            if (std::hypot(r0, r1) < 1e-9 * law.tensile_strength())
+            if (std::hypot(r0, r1) <
+                1e-9 *
+                  masonry::brickwork::strengths_of(law)->tensile_strength())
               break;
             if (it == 50)  // past a tensile peak the mixed control can have
               return path; // no solution: the path ends there

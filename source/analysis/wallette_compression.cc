@@ -133,11 +133,13 @@ namespace masonry
         solver = plugins::Registry<brickwork::LinearSolver>::create(prm);
         // (checked again by run_wallette() for callers of the library)
         AssertThrow(
-          material->nonlocal_length() == 0 || integrator->updates_after_step(),
+          brickwork::nonlocal_length(*material) == 0 ||
+            integrator->updates_after_step(),
           ExcParameter("Nonlocal length",
                        "a value > 0 needs `Damage integration = implex'"));
         AssertThrow(
-          material->nonlocal_length() == 0 || !s.steps.implex_floor_correction,
+          brickwork::nonlocal_length(*material) == 0 ||
+            !s.steps.implex_floor_correction,
           ExcParameter("Nonlocal length",
                        "a value > 0 needs `IMPL-EX floor correction = "
                        "accept'"));

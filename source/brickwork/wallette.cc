@@ -692,17 +692,15 @@ namespace masonry
                const model::Integrator &integrator,
                const WalletteSettings  &settings)
     {
-      const BrickMaterial &units = laws.brick_law(unit_region);
-      AssertThrow(units.nonlocal_length() == 0 ||
-                    integrator.updates_after_step(),
+      const double radius = nonlocal_length(laws.brick_law(unit_region));
+      AssertThrow(radius == 0 || integrator.updates_after_step(),
                   ExcMessage("Brick material: `Nonlocal length' > 0 needs "
                              "`Damage integration = implex'"));
-      AssertThrow(units.nonlocal_length() == 0 ||
-                    !settings.steps.implex_floor_correction,
+      AssertThrow(radius == 0 || !settings.steps.implex_floor_correction,
                   ExcMessage("Brick material: `Nonlocal length' > 0 needs "
                              "`IMPL-EX floor correction = accept'"));
       for (unsigned int r = 1; r < laws.n_regions(); ++r)
-        AssertThrow(laws.brick_law(r).nonlocal_length() == 0,
+        AssertThrow(nonlocal_length(laws.brick_law(r)) == 0,
                     ExcMessage("the law of `" + laws.region(r).entry +
                                "': `Nonlocal length' must be 0 (the "
                                "nonlocal average acts on the units only)"));

@@ -40,11 +40,11 @@ namespace masonry
       double strength_factor = 1;
       /**
        * Factors on the law's tensile and compressive measures
-       * (dimensionless, 1: local): with a nonlocal length (nonlocal_length()
-       * > 0) the model sets them, in the implicit update after an IMPL-EX
-       * step, to the ratios of the nonlocal averages of nonlocal_measures()
-       * around the point to their local values, so that the law sees the
-       * averaged measures.
+       * (dimensionless, 1: local): for a law with NonlocalMeasures and a
+       * nonlocal length > 0 the model sets them, in the implicit update after
+       * an IMPL-EX step, to the ratios of the nonlocal averages of
+       * nonlocal_measures() around the point to their local values, so that the
+       * law sees the averaged measures.
        */
       double tensile_factor = 1, compressive_factor = 1;
     };
@@ -196,45 +196,71 @@ namespace masonry
        */
       virtual dealii::SymmetricTensor<4, 3>
       elastic_stiffness() const;
+    };
 
-      /**
-       * The unit's uniaxial strengths (Pa) and tensile fracture energy
-       * (J/m^2) for laws that derive from them (the splitting interfaces);
-       * 0: the material has none (elastic).
-       */
+    /**
+     * @name Optional capabilities of a brick material. A law that has one
+     * derives from its class as well as from BrickMaterial, and the model
+     * asks for it (strengths_of(), nonlocal_of()); a law without it
+     * declares nothing.
+     */
+    /** @{ */
+    /**
+     * Uniaxial strengths and a tensile fracture energy: the splitting
+     * interfaces' law derives its defaults from the units' (their entries
+     * then need no value), and the step control's runaway guard reads the
+     * largest compressive strength of the regions' laws.
+     */
+    class MaterialStrengths
+    {
+    public:
+      virtual ~MaterialStrengths() = default;
+      /** Uniaxial compressive strength f_c, Pa (> 0). */
       virtual double
-      compressive_strength() const;
-      /** See compressive_strength(). */
+      compressive_strength() const = 0;
+      /** Uniaxial tensile strength f_t, Pa (> 0). */
       virtual double
-      tensile_strength() const;
-      /** See compressive_strength(). */
+      tensile_strength() const = 0;
+      /** Mode I fracture energy G_f, J/m^2 (> 0). */
       virtual double
-      tensile_fracture_energy() const;
+      tensile_fracture_energy() const = 0;
+    };
 
-      /**
-       * Radius R (m) of the nonlocal average of the units' tensile measure
-       * (0: local, the default). See BrickPoint::tensile_factor.
-       */
+    /**
+     * Measures that a nonlocal average acts on (`Nonlocal length' of the
+     * units' law): after an IMPL-EX step the model averages them over the
+     * units within the radius and hands the ratios of the averages to the
+     * local values to the law (BrickPoint::tensile_factor,
+     * compressive_factor).
+     */
+    class NonlocalMeasures
+    {
+    public:
+      virtual ~NonlocalMeasures() = default;
+      /** Radius R (m) of the average; 0: local. */
       virtual double
-      nonlocal_length() const
-      {
-        return 0;
-      }
-
+      nonlocal_length() const = 0;
       /**
-       * The tensile and compressive measures (Pa, >= 0) that the nonlocal
-       * average acts on, at the trial state of @p strain from @p old_state
-       * (0 by default).
+       * The tensile and compressive measures (Pa, >= 0) at the trial state
+       * of @p strain from @p old_state.
        */
       virtual std::array<double, 2>
       nonlocal_measures(const dealii::SymmetricTensor<2, 3> &strain,
                         ConstStateView                       old_state,
-                        const BrickPoint                    &point) const
-      {
-        (void)strain, (void)old_state, (void)point;
-        return {{0., 0.}};
-      }
+                        const BrickPoint                    &point) const = 0;
     };
+
+    /** The strengths of @p law; nullptr: it has none. */
+    const MaterialStrengths *
+    strengths_of(const BrickMaterial &law);
+    /** The nonlocal measures of @p law; nullptr: it has none. */
+    const NonlocalMeasures *
+    nonlocal_of(const BrickMaterial &law);
+    /** The radius of @p law's nonlocal average, m (0: local, also for a law
+     * without nonlocal measures). */
+    double
+    nonlocal_length(const BrickMaterial &law);
+    /** @} */
   } // namespace brickwork
 } // namespace masonry
 

@@ -108,7 +108,8 @@ namespace masonry
 
       std::array<std::vector<double>, 2>
       nonlocal_factors(const NonlocalAverage               &average,
-                       const BrickMaterial                 &material,
+                       const NonlocalMeasures              &material,
+                       const MaterialStrengths             *strengths,
                        const DoFHandler<3>                 &dof_handler,
                        const TrilinosWrappers::MPI::Vector &ghosted,
                        const PointStates                   &bricks,
@@ -153,8 +154,9 @@ namespace masonry
                             comm,
                             ArrayView<double>(measure));
         std::array<std::vector<double>, 2> rho;
-        const double floor[2] = {1e-3 * material.tensile_strength(),
-                                 1e-3 * material.compressive_strength()};
+        const double                       floor[2] = {
+                                strengths ? 1e-3 * strengths->tensile_strength() : 0.,
+          strengths ? 1e-3 * strengths->compressive_strength() : 0.};
         for (unsigned int k = 0; k < 2; ++k)
           {
             rho[k].assign(n, 1.);

@@ -91,12 +91,14 @@ namespace masonry
        * this rank's unit cells (8 per active cell, 1 elsewhere) at the
        * displacements @p ghosted (every entry on every rank): rho = average
        * / max(local, 1e-3 f) of each of @p material's nonlocal_measures()
-       * from the converged states (f: f_t, f_c). The measures are summed
+       * from the converged states (f: f_t, f_c of @p strengths; 0 without
+       * them). The measures are summed
        * over the ranks of @p comm (collective).
        */
       std::array<std::vector<double>, 2>
       nonlocal_factors(const NonlocalAverage                       &average,
-                       const BrickMaterial                         &material,
+                       const NonlocalMeasures                      &material,
+                       const MaterialStrengths                     *strengths,
                        const dealii::DoFHandler<3>                 &dof_handler,
                        const dealii::TrilinosWrappers::MPI::Vector &ghosted,
                        const PointStates                           &bricks,

@@ -94,18 +94,20 @@ namespace masonry
       Assembler::update_nonlocal_factors()
       {
         // the units' law (the mortar's is local: LawSet)
-        const BrickMaterial  &material = parts.laws.brick_law(unit_region);
-        System               &system   = parts.system;
-        const System::Vector &ghosted  = system.ghosted;
-        if (material.nonlocal_length() > 0)
+        const BrickMaterial    &material = parts.laws.brick_law(unit_region);
+        System                 &system   = parts.system;
+        const System::Vector   &ghosted  = system.ghosted;
+        const NonlocalMeasures *measures = nonlocal_of(material);
+        if (measures && measures->nonlocal_length() > 0)
           {
             if (!nonlocal)
               nonlocal = std::make_unique<NonlocalAverage>(
                 make_unit_average(system.dof_handler,
                                   parts.specimen,
-                                  material.nonlocal_length()));
+                                  measures->nonlocal_length()));
             rho = model::nonlocal_factors(*nonlocal,
-                                          material,
+                                          *measures,
+                                          strengths_of(material),
                                           system.dof_handler,
                                           ghosted,
                                           parts.states.bricks[unit_region],

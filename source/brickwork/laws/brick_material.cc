@@ -27,22 +27,23 @@ namespace masonry
 
 
 
-    double
-    BrickMaterial::compressive_strength() const
+    const MaterialStrengths *
+    strengths_of(const BrickMaterial &law)
     {
-      return 0;
+      return dynamic_cast<const MaterialStrengths *>(&law);
+    }
+
+    const NonlocalMeasures *
+    nonlocal_of(const BrickMaterial &law)
+    {
+      return dynamic_cast<const NonlocalMeasures *>(&law);
     }
 
     double
-    BrickMaterial::tensile_strength() const
+    nonlocal_length(const BrickMaterial &law)
     {
-      return 0;
-    }
-
-    double
-    BrickMaterial::tensile_fracture_energy() const
-    {
-      return 0;
+      const NonlocalMeasures *n = nonlocal_of(law);
+      return n ? n->nonlocal_length() : 0.;
     }
 
     dealii::SymmetricTensor<4, 3>

@@ -495,24 +495,28 @@ namespace masonry
         derived.push_back({name, from_brick, unit, how});
         return from_brick;
       };
-      const double f_t = value(s.tensile_strength,
-                               brick.tensile_strength(),
+      // the brick material's strengths, if it has them
+      const MaterialStrengths *strengths = strengths_of(brick);
+      const double             f_t       = value(s.tensile_strength,
+                               strengths ? strengths->tensile_strength() : 0.,
                                "Splitting tensile strength",
                                "tensile_strength",
                                "Pa",
                                "the brick material's tensile strength");
-      const double G_f = value(s.fracture_energy,
-                               brick.tensile_fracture_energy(),
-                               "Splitting fracture energy",
-                               "mode_I_fracture_energy",
-                               "J/m^2",
-                               "the brick material's tensile fracture energy");
-      const double f_c = value(s.compressive_strength,
-                               brick.compressive_strength(),
-                               "Splitting compressive strength",
-                               "compressive_strength",
-                               "Pa",
-                               "the brick material's compressive strength");
+      const double             G_f =
+        value(s.fracture_energy,
+              strengths ? strengths->tensile_fracture_energy() : 0.,
+              "Splitting fracture energy",
+              "mode_I_fracture_energy",
+              "J/m^2",
+              "the brick material's tensile fracture energy");
+      const double f_c =
+        value(s.compressive_strength,
+              strengths ? strengths->compressive_strength() : 0.,
+              "Splitting compressive strength",
+              "compressive_strength",
+              "Pa",
+              "the brick material's compressive strength");
       if (!(f_c > f_t))
         {
           // (full paths: not relative to the subsection being parsed)

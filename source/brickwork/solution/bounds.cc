@@ -29,7 +29,8 @@ namespace masonry
         for (unsigned int r = 0; r < laws.n_regions(); ++r)
           {
             const BrickMaterial &m = laws.brick_law(r);
-            bound[0]     = std::max(bound[0], m.compressive_strength());
+            if (const MaterialStrengths *f = strengths_of(m))
+              bound[0] = std::max(bound[0], f->compressive_strength());
             const auto C = m.elastic_stiffness();
             for (unsigned int i = 0; i < 3; ++i)
               bound[1] = std::max(bound[1], C[i][i][i][i]);

@@ -104,7 +104,9 @@ namespace masonry
 
 
     /** See the file documentation. */
-    class DamagePlasticityBrick : public BrickMaterial
+    class DamagePlasticityBrick : public BrickMaterial,
+                                  public MaterialStrengths,
+                                  public NonlocalMeasures
     {
     public:
       /** A point of a uniaxial envelope. */
