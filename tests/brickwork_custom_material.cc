@@ -214,4 +214,8 @@ main(int argc, char **argv)
           !std::ifstream("results/implex/curve.csv"),
         "Damage integration = implex with a law that does not extrapolate: "
         "a one-line error naming `Brick material/Model', no curve");
+  const testing::Result validated = testing::run({"--validate", "implex.prm"});
+  check(validated.exit_code != 0 && testing::n_lines(validated.err) == 1 &&
+          validated.err.find("`Brick material/Model'") != std::string::npos,
+        "--validate refuses the same file with the same one-line error");
 }
