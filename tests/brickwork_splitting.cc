@@ -71,6 +71,35 @@ main(int argc, char **argv)
           "derived cohesion and friction: Mohr-Coulomb through f_c and f_t");
   }
   {
+    // the plane's law selected in its own subsection instead of derived
+    // from the unit: `bilinear' with the same f_t opens at the same strain
+    // (a plane loaded in tension only: its friction does not act)
+    const double nu       = -0.25;
+    auto         summary  = run("bilinear",
+                       splitting_unit(nu,
+                                      0.0005,
+                                      1000,
+                                      "",
+                                      "subsection Splitting interface law\n"
+                                               "  set Law = bilinear\n"
+                                               "  set Normal stiffness = 1e15\n"
+                                               "  set Shear stiffness = 6.67e14\n"
+                                               "  subsection Bilinear\n"
+                                               "    set Tensile strength = 1e6\n"
+                                               "    set Mode I fracture energy = 50\n"
+                                               "  end\n"
+                                               "end\n"));
+    const double expected = f_t * (1 - nu * nu) / (-nu * E);
+    const double opened   = opening_strain("bilinear");
+    const auto  &derived  = summary["derived_values"];
+    check(opened > 0 && relative(opened, expected) < 0.01 &&
+            !(derived.contains("splitting_interfaces") &&
+              derived["splitting_interfaces"].contains("cohesion")),
+          "Splitting interface law/Law = bilinear, f_t = 1 MPa: the plane "
+          "opens at strain f_t (1 - nu^2) / (-nu E) = 3.75e-4 (1 %), and "
+          "no derived composite law is reported");
+  }
+  {
     // stopped after the interface has opened (step 85 of 100) and resumed:
     // the splitting interfaces' states are in the checkpoint
     run("uninterrupted", unit(-0.25, 0.0005, 100));

@@ -52,6 +52,43 @@ namespace masonry
         (plugins::add_subsystem(
            {mortar_section, "Model", &declare_mortar_material}),
          true);
+
+      /** The splitting interfaces through the units: an interface law of
+       * their own. */
+      const char *const splitting_section = "Splitting interface law";
+      /** The selection of the law derived from the units (the default). */
+      const char *const from_units = "from the units";
+
+      void
+      declare_splitting_law(dealii::ParameterHandler &prm)
+      {
+        using Laws = plugins::Registry<brickwork::InterfaceLaw>;
+        Laws::declare_parameters(prm, splitting_section);
+        // the family's entry, declared again with the derived law as the
+        // default and the splitting interfaces' own text
+        prm.enter_subsection(splitting_section);
+        prm.declare_entry(
+          "Law",
+          from_units,
+          dealii::Patterns::Selection(std::string(from_units) + "|" +
+                                      Laws::pattern()),
+          Laws::documentation(
+            "The law of the splitting interfaces through the units "
+            "(`subsection Wallette/Splitting interfaces = true'). `from the "
+            "units' (the default): the composite law with the units' "
+            "tensile strength and fracture energy and Coulomb friction "
+            "through their uniaxial strengths, derived from the brick "
+            "material unless the `Splitting ...' entries of subsection "
+            "Wallette give the values (doc/brickwork.md, Splitting "
+            "interfaces). Any interface law below: that law, with its "
+            "entries in this subsection."));
+        prm.leave_subsection();
+      }
+
+      [[maybe_unused]] const bool splitting_declared =
+        (plugins::add_subsystem(
+           {splitting_section, "Law", &declare_splitting_law}),
+         true);
     } // namespace
 
     /**
@@ -75,19 +112,23 @@ namespace masonry
                           Double(0),
                           "Tensile strength of the units across a splitting "
                           "interface, Pa (>= 0; 0: the brick material's "
-                          "`Tensile strength').");
+                          "`Tensile strength'), with `Splitting interface "
+                          "law/Law = from the units'.");
         prm.declare_entry("Splitting fracture energy",
                           "0",
                           Double(0),
                           "Mode I fracture energy of the units across a "
                           "splitting interface, J/m^2 = N/m (>= 0; 0: the "
-                          "brick material's `Tensile fracture energy').");
+                          "brick material's `Tensile fracture energy'), "
+                          "with `Splitting interface law/Law = from the "
+                          "units'.");
         prm.declare_entry("Splitting compressive strength",
                           "0",
                           Double(0),
                           "Compressive strength of the units for the "
                           "splitting interfaces' friction, Pa (>= 0; 0: the "
-                          "brick material's `Compressive strength').");
+                          "brick material's `Compressive strength'), with "
+                          "`Splitting interface law/Law = from the units'.");
         prm.declare_entry("Splitting stiffness",
                           "0",
                           Double(0),
@@ -95,7 +136,8 @@ namespace masonry
                           "interfaces, Pa/m (>= 0; 0: 100 E_b / L with the "
                           "enlarged unit's length L, which adds 1 % to a "
                           "unit's compliance along its length); the shear "
-                          "penalty is this / (2 (1 + nu_b)).");
+                          "penalty is this / (2 (1 + nu_b)); with "
+                          "`Splitting interface law/Law = from the units'.");
       }
 
       void
@@ -153,7 +195,10 @@ namespace masonry
         else
           brickwork::check_units(boxes, s.mesh);
         // (the detailed model's units are one joint shorter)
-        if (s.mesh.split_units)
+        using Laws = plugins::Registry<brickwork::InterfaceLaw>;
+        splitting_choice =
+          s.mesh.split_units ? Laws::selected(prm, splitting_section) : "";
+        if (splitting_choice == from_units)
           splitting_law = brickwork::make_splitting_law(
             splitting,
             *material,
@@ -162,6 +207,9 @@ namespace masonry
                 plugins::Registry<brickwork::BrickMaterial>::selected(prm)),
             s.mesh.size.length -
               (s.mesh.detailed ? s.mesh.mortar_thickness : 0.));
+        else if (s.mesh.split_units)
+          splitting_law =
+            Laws::create(prm, splitting_choice, splitting_section);
         make_law_set();
         // (checked again by run_wallette(): here for --validate)
         brickwork::check_laws(laws, *integrator, s);
@@ -199,7 +247,9 @@ namespace masonry
         if (splitting_law)
           laws.add_joint_law({brickwork::model::splitting_type},
                              *splitting_law,
-                             "Wallette/Splitting interfaces",
+                             splitting_choice == from_units ?
+                               "Wallette/Splitting interfaces" :
+                               std::string(splitting_section) + "/Law",
                              "splitting_");
       }
 
@@ -249,7 +299,10 @@ namespace masonry
       std::unique_ptr<brickwork::LinearSolver>      solver;
       brickwork::SplittingSettings                  splitting;
       std::unique_ptr<brickwork::InterfaceLaw>      splitting_law;
-      brickwork::LawSet                             laws;
+      /** `Splitting interface law/Law' ("" without splitting
+       * interfaces). */
+      std::string       splitting_choice;
+      brickwork::LawSet laws;
       std::vector<brickwork::Box>                   boxes;
       std::vector<std::unique_ptr<brickwork::postprocess::Postprocessor>>
         postprocessors;
