@@ -325,6 +325,27 @@ namespace
             other.err.find("List of postprocessors") != std::string::npos,
           "resume with another list of postprocessors: the error names "
           "`Resume' and `List of postprocessors'");
+
+    // a checkpoint of another layout (one written before the laws had a
+    // state array each held the number of ranks where the format tag is
+    // now): refused with one line before its parts are read
+    run("old_layout", prm(short_hex + "set Maximum steps = 37\n", material()));
+    std::string bytes = testing::read_file("results/old_layout/checkpoint.0");
+    const std::string tag("\x32\x56\x57\x4d", 4);
+    const std::size_t at = bytes.find(tag);
+    if (at != std::string::npos)
+      bytes.replace(at, 4, std::string("\x01\x00\x00\x00", 4));
+    testing::write_file("results/old_layout/checkpoint.0", bytes);
+    testing::write_file("old_layout.prm",
+                        "set Output directory = results/old_layout\n" +
+                          prm(short_hex + "set Resume = true\n", material()));
+    const testing::Result old = testing::run({"old_layout.prm"});
+    testing::check_error(old);
+    check(at != std::string::npos &&
+            old.err.find("Resume") != std::string::npos &&
+            old.err.find("another version of masonry") != std::string::npos,
+          "resume from a checkpoint of the layout before: the error names "
+          "`Resume' and says it was written by another version");
   }
 
 } // namespace

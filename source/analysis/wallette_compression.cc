@@ -80,8 +80,11 @@ namespace masonry
             "through their uniaxial strengths, derived from the brick "
             "material unless the `Splitting ...' entries of subsection "
             "Wallette give the values (doc/brickwork.md, Splitting "
-            "interfaces). Any interface law below: that law, with its "
-            "entries in this subsection."));
+            "interfaces); the entries of this subsection are then not used. "
+            "Any interface law below: that law, with its entries in this "
+            "subsection, `Normal stiffness' and `Shear stiffness' included "
+            "(their defaults are a bed joint's, not the derived 100 E_b / "
+            "L)."));
         prm.leave_subsection();
       }
 
@@ -301,9 +304,9 @@ namespace masonry
       std::unique_ptr<brickwork::InterfaceLaw>      splitting_law;
       /** `Splitting interface law/Law' ("" without splitting
        * interfaces). */
-      std::string       splitting_choice;
-      brickwork::LawSet laws;
-      std::vector<brickwork::Box>                   boxes;
+      std::string                 splitting_choice;
+      brickwork::LawSet           laws;
+      std::vector<brickwork::Box> boxes;
       std::vector<std::unique_ptr<brickwork::postprocess::Postprocessor>>
         postprocessors;
     };

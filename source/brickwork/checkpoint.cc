@@ -15,6 +15,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <new>
 
 #include "solution/deletion.h"
 
@@ -58,6 +59,12 @@ namespace masonry
 
       namespace
       {
+        /** The first entry of a checkpoint: the layout of what follows
+         * (one state array per law of the law set), so that a checkpoint
+         * of another layout is told apart before its parts are read (one
+         * written before had the number of ranks there, a small number). */
+        constexpr unsigned int checkpoint_format = 0x4d575632u;
+
         /** Every part in one order, for writing and reading. */
         template <class Archive>
         void
@@ -93,6 +100,8 @@ namespace masonry
             OutputFile out(name);
             {
               boost::archive::binary_oarchive ar(out);
+              unsigned int                    format = checkpoint_format;
+              ar                             &format;
               unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
               types::global_dof_index n_dofs =
                 parts.system.dof_handler.n_dofs();
@@ -148,9 +157,17 @@ namespace masonry
         try
           {
             boost::archive::binary_iarchive ar(in);
-            unsigned int                    n_ranks;
-            types::global_dof_index         n_dofs;
-            ar &n_ranks                    &n_dofs;
+            unsigned int                    format = 0;
+            ar                             &format;
+            AssertThrow(format == checkpoint_format,
+                        ExcParameter("Resume",
+                                     "the checkpoint " + name +
+                                       " was written by another version of "
+                                       "masonry (another layout); run from "
+                                       "the start"));
+            unsigned int            n_ranks;
+            types::global_dof_index n_dofs;
+            ar &n_ranks            &n_dofs;
             AssertThrow(n_ranks == Utilities::MPI::n_mpi_processes(comm) &&
                           n_dofs == parts.system.dof_handler.n_dofs(),
                         ExcParameter("Resume",
@@ -185,6 +202,14 @@ namespace masonry
                         ExcParameter("Resume",
                                      "the checkpoint " + name +
                                        " cannot be read (" + e.what() + ")"));
+          }
+        catch (const std::bad_alloc &)
+          {
+            // a size read from a damaged file
+            AssertThrow(false,
+                        ExcParameter("Resume",
+                                     "the checkpoint " + name +
+                                       " cannot be read (damaged)"));
           }
         parts.system.orphans = orphan_dofs(parts.system, parts.specimen);
         parts.system.make_constraints();

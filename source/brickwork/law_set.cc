@@ -71,8 +71,11 @@ namespace masonry
     LawSet::slot_of_type(const unsigned int type) const
     {
       AssertThrow(has_joint_law(type),
-                  dealii::ExcMessage("internal error: joint type " +
-                                     std::to_string(type) + " has no law"));
+                  dealii::ExcMessage(
+                    "the wallette has no law for joint type " +
+                    std::to_string(type) +
+                    " (0 bed, 1 head, 2 collar, 3 splitting: the splitting "
+                    "interfaces need `Splitting interfaces = true')"));
       return slots[type];
     }
 

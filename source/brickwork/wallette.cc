@@ -269,6 +269,10 @@ namespace masonry
               for (unsigned int q = 0; q < 8; ++q)
                 owned_bricks[region].push_back(8 * c + q);
             }
+        for (unsigned int t = 0; t < joints.n_faces_of_type.size(); ++t)
+          AssertThrow(joints.n_faces_of_type[t] == 0 || laws.has_joint_law(t),
+                      ExcMessage(std::string("internal error: ") +
+                                 joint_type_name[t] + " faces without a law"));
         for (unsigned int n = 0; n < joints.faces.size(); ++n)
           if (joints.faces[n].owned)
             for (unsigned int q = 0; q < InterfaceElement::n_points; ++q)
@@ -297,10 +301,6 @@ namespace masonry
                                            initial,
                                            owned_joints[slot]);
           }
-        for (unsigned int t = 0; t < joints.n_faces_of_type.size(); ++t)
-          AssertThrow(joints.n_faces_of_type[t] == 0 || laws.has_joint_law(t),
-                      ExcMessage(std::string("internal error: ") +
-                                 joint_type_name[t] + " faces without a law"));
       }
 
       StepOutcome

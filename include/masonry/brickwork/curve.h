@@ -58,8 +58,8 @@ namespace masonry
       unsigned int step      = 0;
       unsigned int cycle     = 0;
       bool         unloading = false;
-      /** Its active cell index and region (BrickPoint::region: 0 unit,
-       * 1 mortar). */
+      /** Its active cell index and region (0 unit, 1 mortar:
+       * ModelView::cell_region()). */
       unsigned int  cell   = 0;
       unsigned char region = 0;
       /** Its centre, m. */

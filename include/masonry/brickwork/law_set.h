@@ -6,8 +6,8 @@
  * through the units). Each distinct law has its own point states (the
  * layout it declares), so a law never carries another's variables; the
  * joint types that share a law (bed, head and collar share `Interface
- * law') share its states. Public: run_wallette() takes one, and a
- * postprocessor reads it through ModelView::laws.
+ * law') share its states. Public: a postprocessor reads the run's through
+ * ModelView::laws (the driver builds it and hands it to the model).
  */
 #ifndef masonry_brickwork_law_set_h
 #define masonry_brickwork_law_set_h
@@ -23,7 +23,8 @@ namespace masonry
     class BrickMaterial;
     class InterfaceLaw;
 
-    /** The cell regions (BrickPoint::region, ModelView::cell_region()). */
+    /** The cell regions (ModelView::cell_region(), Specimen::cell_region):
+     * the key of a cell's law in a LawSet. */
     constexpr unsigned int unit_region = 0, mortar_region = 1;
 
     /** A law of a LawSet and how the run names it. */

@@ -118,7 +118,7 @@ namespace masonry
                                         "subdomain"};
           // the quantities each region's law reports, with the region's
           // prefix (0 in the cells of the other regions)
-          std::vector<unsigned int> first_reported;
+          std::vector<unsigned int> first_reported, n_reported;
           for (unsigned int r = 0; r < laws.n_regions(); ++r)
             {
               first_reported.push_back(names.size());
@@ -126,6 +126,7 @@ namespace masonry
               if (!law.is_linear())
                 for (const auto &name : law.reported_quantities())
                   names.push_back(laws.region(r).prefix + name);
+              n_reported.push_back(names.size() - first_reported.back());
             }
           const bool fading = view.fades_cells();
           if (fading)
@@ -165,10 +166,10 @@ namespace masonry
                 fe_values.reinit(cell);
                 fe_values[displacement].get_function_symmetric_gradients(
                   ghosted, eps);
-                const BrickMaterial &law = view.brick_law_of(c);
-                const unsigned int first = first_reported[view.cell_region(c)];
-                if (!law.is_linear())
-                  values.resize(law.reported_quantities().size());
+                const unsigned int   r     = view.cell_region(c);
+                const BrickMaterial &law   = laws.brick_law(r);
+                const unsigned int   first = first_reported[r];
+                values.resize(n_reported[r]);
                 SymmetricTensor<2, 3> mean;
                 for (unsigned int q = 0; q < 8; ++q)
                   {

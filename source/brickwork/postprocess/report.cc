@@ -194,21 +194,27 @@ namespace masonry
         // each region's damages in their columns (0 over the other
         // regions' cells)
         std::vector<double> brick(laws.brick_damage_names().size(), 0.), b;
+        // each region's first column and number of damages
+        std::vector<unsigned int> first, count;
+        for (unsigned int r = 0; r < laws.n_regions(); ++r)
+          {
+            first.push_back(laws.first_brick_damage(r));
+            count.push_back(laws.brick_law(r).damage_names().size());
+          }
         if (!laws.bricks_linear())
           for (const auto &cell : triangulation.active_cell_iterators())
             {
               const unsigned int c = cell->active_cell_index();
               if (!cell->is_locally_owned() || view.specimen.deleted[c])
                 continue;
-              const BrickMaterial &law = view.brick_law_of(c);
-              const unsigned int   first =
-                laws.first_brick_damage(view.cell_region(c));
-              b.resize(law.damage_names().size());
+              const unsigned int   r   = view.cell_region(c);
+              const BrickMaterial &law = laws.brick_law(r);
+              b.resize(count[r]);
               for (unsigned int q = 0; q < 8; ++q)
                 {
                   law.damages(view.brick_state(8 * c + q), b);
                   for (unsigned int k = 0; k < b.size(); ++k)
-                    brick[first + k] = std::max(brick[first + k], b[k]);
+                    brick[first[r] + k] = std::max(brick[first[r] + k], b[k]);
                 }
             }
         for (auto &x : brick)

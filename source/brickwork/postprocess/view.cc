@@ -197,6 +197,12 @@ namespace masonry
     ModelView::brick_state_index(const std::string &name,
                                  const unsigned int region) const
     {
+      AssertThrow(region < laws.n_regions(),
+                  dealii::ExcMessage(
+                    "model view: the wallette has no cell region " +
+                    std::to_string(region) + " (it has " +
+                    std::to_string(laws.n_regions()) +
+                    ": 0 units, 1 mortar of the detailed model)"));
       return state_index(laws.brick_law(region).state_variables(),
                          name,
                          "law of `" + laws.region(region).entry + "'");

@@ -162,12 +162,14 @@ namespace masonry
           "normal to its longer horizontal side (in line with the head "
           "joints of the next course for a stretcher; units whose half is "
           "not a whole number of elements, such as closers, stay whole). "
-          "The interface follows the composite law with the unit's tensile "
-          "strength and fracture energy as its tension cut-off, Coulomb "
-          "friction through the unit's uniaxial strengths (c = sqrt(f_c "
-          "f_t) / 2, tan(phi) = (f_c - f_t) / (2 sqrt(f_c f_t))), G_II = 10 "
-          "G_f and no cap (10 f_c); the values used are printed in log.txt "
-          "and summary.json (derived_values / splitting_interfaces). Needs "
+          "The interface follows `subsection Splitting interface law'; by "
+          "default (`from the units') the composite law with the unit's "
+          "tensile strength and fracture energy as its tension cut-off, "
+          "Coulomb friction through the unit's uniaxial strengths (c = "
+          "sqrt(f_c f_t) / 2, tan(phi) = (f_c - f_t) / (2 sqrt(f_c f_t))), "
+          "G_II = 10 G_f and no cap (10 f_c); the values used are printed "
+          "in log.txt and summary.json (derived_values / "
+          "splitting_interfaces). Needs "
           "`Joints = interfaces'.");
       }
 

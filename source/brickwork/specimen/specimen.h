@@ -62,8 +62,9 @@ namespace masonry
         /** Per active cell: the largest shortening it has had (with
          * `Deletion crushing length' > 0). */
         std::vector<double> max_shortening;
-        /** Per active cell: BrickPoint::region (0 unit, 1 mortar: the cells
-         * of material id n_bricks in the detailed model). */
+        /** Per active cell: its region, the key of its law in the LawSet
+         * (0 unit, 1 mortar: the cells of material id n_bricks in the
+         * detailed model). */
         std::vector<unsigned char> cell_region;
         /** Per joint face: strength factor, deleted. */
         std::vector<double> face_factor;
