@@ -479,15 +479,20 @@ namespace masonry
         {"Compressive fracture energy", compressive},
         {"Normal stiffness", stiffness},
         {"Shear stiffness", stiffness}};
-      // a value given (> 0) or the brick material's (printed as derived)
-      const auto value = [&](const double       given,
-                             const double       from_brick,
+      // the brick material's strengths, if it has them
+      const MaterialStrengths *strengths = strengths_of(brick);
+
+      // a value given (> 0) or the brick material's strength `of' (printed
+      // as derived; an error if the material has none)
+      const auto value = [&](const double given,
+                             double (MaterialStrengths::*of)() const,
                              const char        *entry,
                              const char        *name,
                              const char        *unit,
                              const std::string &how) {
         if (given > 0)
           return given;
+        const double from_brick = strengths ? (strengths->*of)() : 0.;
         AssertThrow(from_brick > 0,
                     ExcParameter(entry,
                                  "must be given (> 0): the brick material "
@@ -495,28 +500,24 @@ namespace masonry
         derived.push_back({name, from_brick, unit, how});
         return from_brick;
       };
-      // the brick material's strengths, if it has them
-      const MaterialStrengths *strengths = strengths_of(brick);
-      const double             f_t       = value(s.tensile_strength,
-                               strengths ? strengths->tensile_strength() : 0.,
+      const double f_t = value(s.tensile_strength,
+                               &MaterialStrengths::tensile_strength,
                                "Splitting tensile strength",
                                "tensile_strength",
                                "Pa",
                                "the brick material's tensile strength");
-      const double             G_f =
-        value(s.fracture_energy,
-              strengths ? strengths->tensile_fracture_energy() : 0.,
-              "Splitting fracture energy",
-              "mode_I_fracture_energy",
-              "J/m^2",
-              "the brick material's tensile fracture energy");
-      const double f_c =
-        value(s.compressive_strength,
-              strengths ? strengths->compressive_strength() : 0.,
-              "Splitting compressive strength",
-              "compressive_strength",
-              "Pa",
-              "the brick material's compressive strength");
+      const double G_f = value(s.fracture_energy,
+                               &MaterialStrengths::tensile_fracture_energy,
+                               "Splitting fracture energy",
+                               "mode_I_fracture_energy",
+                               "J/m^2",
+                               "the brick material's tensile fracture energy");
+      const double f_c = value(s.compressive_strength,
+                               &MaterialStrengths::compressive_strength,
+                               "Splitting compressive strength",
+                               "compressive_strength",
+                               "Pa",
+                               "the brick material's compressive strength");
       if (!(f_c > f_t))
         {
           // (full paths: not relative to the subsection being parsed)
