@@ -346,6 +346,15 @@ namespace
             old.err.find("another version of masonry") != std::string::npos,
           "resume from a checkpoint of the layout before: the error names "
           "`Resume' and says it was written by another version");
+    // found before anything is written: the stopped run's summary.json
+    // and log.txt are as that run left them
+    const masonry::Json kept = masonry::parse_json(
+      testing::read_file("results/old_layout/summary.json"));
+    check(kept.at("status").get<std::string>() == "interrupted" &&
+            testing::read_file("results/old_layout/log.txt")
+                .find("another version") == std::string::npos,
+          "the refused resume leaves the stopped run's summary.json (status "
+          "interrupted) and log.txt as they were");
   }
 
 } // namespace

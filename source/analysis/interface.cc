@@ -21,5 +21,9 @@ namespace masonry
     void
     Interface::setup(dealii::ParameterHandler &)
     {}
+
+    void
+    Interface::check_output_directory(const std::string &, const MPI_Comm) const
+    {}
   } // namespace analysis
 } // namespace masonry

@@ -226,6 +226,19 @@ namespace masonry
       }
 
       void
+      check_output_directory(const std::string &directory,
+                             const MPI_Comm     comm) const override
+      {
+        // a resume needs a readable checkpoint there, found before the
+        // driver replaces the stopped run's summary.json and log.txt
+        if (s.checkpoint.resume)
+          {
+            plugins::ParsePathScope scope("Wallette");
+            brickwork::model::check_checkpoint(directory, comm);
+          }
+      }
+
+      void
       run(RunContext &context) override
       {
         brickwork::run_wallette(

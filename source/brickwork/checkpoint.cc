@@ -82,7 +82,80 @@ namespace masonry
                  std::to_string(
                    Utilities::MPI::this_mpi_process(context.mpi_communicator));
         }
+
+        /** The error of a missing checkpoint @p name. */
+        dealii::ExcMessage
+        no_checkpoint(const std::string &name)
+        {
+          return ExcParameter("Resume",
+                              "no checkpoint " + name +
+                                " (run with `Checkpoint interval' or "
+                                "`Maximum steps' first, with the same "
+                                "output directory and number of ranks)");
+        }
+
+        /** Checkpoint @p name starts with this version's format tag. */
+        void
+        check_format(const unsigned int format, const std::string &name)
+        {
+          AssertThrow(format == checkpoint_format,
+                      ExcParameter("Resume",
+                                   "the checkpoint " + name +
+                                     " was written by another version of "
+                                     "masonry (another layout); run from "
+                                     "the start"));
+        }
       } // namespace
+
+      void
+      check_checkpoint(const std::string &directory, const MPI_Comm comm)
+      {
+        // `masonry --validate' checks without starting MPI: one rank
+        const bool         mpi = Utilities::MPI::job_supports_mpi();
+        const unsigned int rank =
+                             mpi ? Utilities::MPI::this_mpi_process(comm) : 0,
+                           n_ranks_now =
+                             mpi ? Utilities::MPI::n_mpi_processes(comm) : 1;
+        const std::string name = directory +
+                                 (directory.back() == '/' ? "" : "/") +
+                                 "checkpoint." + std::to_string(rank);
+        std::string error;
+        try
+          {
+            std::ifstream in(name, std::ios::binary);
+            AssertThrow(in, no_checkpoint(name));
+            try
+              {
+                boost::archive::binary_iarchive ar(in);
+                unsigned int                    format = 0, n_ranks = 0;
+                ar                             &format;
+                check_format(format, name);
+                ar &n_ranks;
+                AssertThrow(n_ranks == n_ranks_now,
+                            ExcParameter("Resume",
+                                         "the checkpoint was written by a "
+                                         "run with " +
+                                           std::to_string(n_ranks) +
+                                           " ranks; resume with as many"));
+              }
+            catch (const boost::archive::archive_exception &e)
+              {
+                AssertThrow(false,
+                            ExcParameter("Resume",
+                                         "the checkpoint " + name +
+                                           " cannot be read (" + e.what() +
+                                           ")"));
+              }
+          }
+        catch (const std::exception &exc)
+          {
+            error = one_line_message(exc);
+          }
+        if (mpi)
+          throw_if_any_rank_failed(error, comm);
+        else
+          AssertThrow(error.empty(), dealii::ExcMessage(error));
+      }
 
       void
       save_checkpoint(const CheckpointParts &parts,
@@ -148,23 +221,13 @@ namespace masonry
         const MPI_Comm    comm = context.mpi_communicator;
         const std::string name = file_name(context);
         std::ifstream     in(name, std::ios::binary);
-        AssertThrow(in,
-                    ExcParameter("Resume",
-                                 "no checkpoint " + name +
-                                   " (run with `Checkpoint interval' or "
-                                   "`Maximum steps' first, with the same "
-                                   "output directory and number of ranks)"));
+        AssertThrow(in, no_checkpoint(name));
         try
           {
             boost::archive::binary_iarchive ar(in);
             unsigned int                    format = 0;
             ar                             &format;
-            AssertThrow(format == checkpoint_format,
-                        ExcParameter("Resume",
-                                     "the checkpoint " + name +
-                                       " was written by another version of "
-                                       "masonry (another layout); run from "
-                                       "the start"));
+            check_format(format, name);
             unsigned int            n_ranks;
             types::global_dof_index n_dofs;
             ar &n_ranks            &n_dofs;

@@ -73,6 +73,13 @@ namespace masonry
         std::vector<std::string> &postprocessors;
       };
 
+      /** Before anything is written (`Resume = true'): this rank's
+       * checkpoint in @p directory exists, has this version's layout and was
+       * written by as many ranks; else every rank of @p comm throws the
+       * same one-line error naming `Resume'. */
+      void
+      check_checkpoint(const std::string &directory, const MPI_Comm comm);
+
       /** Write this rank's checkpoint (replaces the last one only once
        * complete). */
       void

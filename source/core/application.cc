@@ -137,35 +137,6 @@ namespace masonry
       check_parameter_values(prm);
     }
 
-    /**
-     * `Resume = true' of a wallette needs the checkpoint of an earlier run
-     * in the output directory @p directory.
-     */
-    void
-    check_resume(dealii::ParameterHandler &prm, const std::string &directory)
-    {
-      if (prm.get("Analysis") != "wallette")
-        return;
-      bool resume = false;
-      try
-        {
-          resume = prm.get_bool(std::vector<std::string>{"Wallette"}, "Resume");
-        }
-      catch (...)
-        {
-          return;
-        }
-      const std::string checkpoint =
-        directory + (directory.back() == '/' ? "" : "/") + "checkpoint.0";
-      AssertThrow(!resume || std::filesystem::exists(checkpoint),
-                  dealii::ExcMessage(
-                    parameter_location("Wallette/Resume") +
-                    ": entry 'Wallette/Resume': no checkpoint " + checkpoint +
-                    " (run with `Checkpoint interval' or `Maximum steps' "
-                    "first, with the same output directory and number of "
-                    "ranks)"));
-    }
-
     /** Create and set up the analysis: every input check happens here. */
     std::unique_ptr<analysis::Interface>
     create_analysis(dealii::ParameterHandler &prm)
@@ -521,7 +492,10 @@ namespace masonry
       std::string directory = prm.get("Output directory");
       if (directory.empty())
         directory = default_output_directory(file);
-      check_resume(prm, directory);
+      // before anything is written: the files of an earlier run stay as
+      // they are if the analysis cannot start here (a resume without a
+      // readable checkpoint)
+      analysis->check_output_directory(directory, comm);
       plugins::ParsePathScope scope("");
       OutputDirectory         output(directory, comm);
 
@@ -714,12 +688,12 @@ namespace masonry
                           "--validate takes exactly one parameter file"));
             dealii::ParameterHandler prm;
             read_parameter_file(prm, arguments[1], defaults);
-            create_analysis(prm);
+            const auto  analysis  = create_analysis(prm);
             std::string directory = prm.get("Output directory");
             if (directory.empty())
               directory = default_output_directory(arguments[1]);
             OutputDirectory::check(directory, comm);
-            check_resume(prm, directory);
+            analysis->check_output_directory(directory, comm);
             if (root)
               std::cout << arguments[1] << ": valid (" << prm.get("Analysis")
                         << " analysis)\n";

@@ -45,6 +45,18 @@ namespace masonry
       setup(dealii::ParameterHandler &prm);
 
       /**
+       * Check, before the driver writes anything into @p directory (the
+       * run's output directory; it may not exist yet), that the run can
+       * start there: e.g. that a checkpoint to resume from is readable by
+       * this version. Throws a one-line error naming the entry; the files of
+       * an earlier run in @p directory are then left as they are. Called by
+       * every rank of @p comm. Default: nothing to check.
+       */
+      virtual void
+      check_output_directory(const std::string &directory,
+                             const MPI_Comm     comm) const;
+
+      /**
        * Do the work: write files through @p context.output, add results to
        * @p context.summary and set its `status`.
        */
