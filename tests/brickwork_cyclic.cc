@@ -19,7 +19,9 @@
  *    peak (status completed);
  *  - a run stopped after some steps and resumed from its checkpoint gives
  *    the curve of the uninterrupted run (1e-12); resumed with another
- *    `List of postprocessors', it stops with a one-line error.
+ *    `List of postprocessors' or another tensile strength, or from a
+ *    checkpoint of another layout, it stops with a one-line error before
+ *    it writes anything.
  */
 #include <iomanip>
 
@@ -326,15 +328,38 @@ namespace
           "resume with another list of postprocessors: the error names "
           "`Resume' and `List of postprocessors'");
 
-    // a checkpoint of another layout (one written before the laws had a
-    // state array each held the number of ranks where the format tag is
-    // now): refused with one line before its parts are read
+    // so does a resume with another value of any entry that shapes the run
+    // (here the units' tensile strength: the same mesh and DOFs, so the
+    // checkpoint's parts would load), before anything is written
+    testing::write_file("other_input.prm",
+                        "set Output directory = results/other_list\n" +
+                          prm(short_hex + "set Resume = true\n",
+                              material("set Tensile strength = 3e6\n")));
+    const testing::Result input = testing::run({"other_input.prm"});
+    testing::check_error(input);
+    check(input.err.find("Resume") != std::string::npos &&
+            input.err.find(
+              "`Brick material/Damage plasticity/Tensile strength'") !=
+              std::string::npos &&
+            input.err.find("was `2000000' in that run, `3e6' here") !=
+              std::string::npos,
+          "resume with another tensile strength: the error names `Resume' "
+          "and the entry, with both values");
+    const masonry::Json left = masonry::parse_json(
+      testing::read_file("results/other_list/summary.json"));
+    check(left.at("status").get<std::string>() == "interrupted",
+          "both refused resumes leave the stopped run's summary.json "
+          "(status interrupted)");
+
+    // a checkpoint of another layout (one written before the run's entries
+    // were in its header, whose format tag is one less): refused with one
+    // line before its parts are read
     run("old_layout", prm(short_hex + "set Maximum steps = 37\n", material()));
     std::string bytes = testing::read_file("results/old_layout/checkpoint.0");
-    const std::string tag("\x32\x56\x57\x4d", 4);
+    const std::string tag("\x33\x56\x57\x4d", 4);
     const std::size_t at = bytes.find(tag);
     if (at != std::string::npos)
-      bytes.replace(at, 4, std::string("\x01\x00\x00\x00", 4));
+      bytes.replace(at, 4, std::string("\x32\x56\x57\x4d", 4));
     testing::write_file("results/old_layout/checkpoint.0", bytes);
     testing::write_file("old_layout.prm",
                         "set Output directory = results/old_layout\n" +

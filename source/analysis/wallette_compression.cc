@@ -229,12 +229,15 @@ namespace masonry
       check_output_directory(const std::string &directory,
                              const MPI_Comm     comm) const override
       {
-        // a resume needs a readable checkpoint there, found before the
-        // driver replaces the stopped run's summary.json and log.txt
+        // a resume needs a readable checkpoint there, of a run with the
+        // same entries, found before the driver replaces the stopped run's
+        // summary.json and log.txt
         if (s.checkpoint.resume)
           {
             plugins::ParsePathScope scope("Wallette");
-            brickwork::model::check_checkpoint(directory, comm);
+            brickwork::model::check_checkpoint(directory,
+                                               s.checkpoint.inputs,
+                                               comm);
           }
       }
 

@@ -15,6 +15,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <new>
 
 #include "solution/deletion.h"
@@ -47,7 +48,13 @@ namespace masonry
           "Continue from the checkpoint in the output directory (written "
           "by an earlier run of the same parameter file with the same "
           "number of MPI ranks) instead of starting from zero; the curve "
-          "and results continue as if the run had not stopped.");
+          "and results continue as if the run had not stopped. Only "
+          "`Maximum steps', `Checkpoint interval', `Assembly threads' and "
+          "`Output directory' may differ from the stopped run's file: a "
+          "checkpoint that is missing, of another version or number of "
+          "ranks, or of a run with another value of any other entry is "
+          "refused with an error naming that entry, before anything is "
+          "written.");
       }
 
       void
@@ -55,15 +62,43 @@ namespace masonry
       {
         checkpoint_interval = prm.get_integer("Checkpoint interval");
         resume              = prm.get_bool("Resume");
+        inputs.clear();
+        for (auto &entry : parameter_values(prm))
+          if (!resume_may_change(entry.first))
+            inputs.push_back(std::move(entry));
+      }
+
+      bool
+      CheckpointSettings::resume_may_change(const std::string &path)
+      {
+        for (const char *entry : {"Output directory",
+                                  "Wallette/Resume",
+                                  "Wallette/Maximum steps",
+                                  "Wallette/Checkpoint interval",
+                                  "Wallette/Assembly threads"})
+          if (path == entry)
+            return true;
+        return false;
       }
 
       namespace
       {
         /** The first entry of a checkpoint: the layout of what follows
-         * (one state array per law of the law set), so that a checkpoint
-         * of another layout is told apart before its parts are read (one
-         * written before had the number of ranks there, a small number). */
-        constexpr unsigned int checkpoint_format = 0x4d575632u;
+         * (the run's entries in the header; one state array per law of the
+         * law set), so that a checkpoint of another layout is told apart
+         * before its parts are read (one written before the law set had
+         * the number of ranks there, a small number; one written before
+         * the entries were in the header had 0x4d575632u). */
+        constexpr unsigned int checkpoint_format = 0x4d575633u;
+
+        /** What a checkpoint holds before the parts: who wrote it. */
+        struct Header
+        {
+          unsigned int                                     format  = 0;
+          unsigned int                                     n_ranks = 0;
+          types::global_dof_index                          n_dofs  = 0;
+          std::vector<std::pair<std::string, std::string>> inputs;
+        };
 
         /** Every part in one order, for writing and reading. */
         template <class Archive>
@@ -75,12 +110,21 @@ namespace masonry
           ar &parts.solver &parts.postprocessors;
         }
 
+        /** The checkpoint of rank @p rank in @p directory. */
+        std::string
+        file_name(const std::string &directory, const unsigned int rank)
+        {
+          return directory +
+                 (directory.empty() || directory.back() == '/' ? "" : "/") +
+                 "checkpoint." + std::to_string(rank);
+        }
+
         std::string
         file_name(RunContext &context)
         {
-          return context.output.path() + "checkpoint." +
-                 std::to_string(
-                   Utilities::MPI::this_mpi_process(context.mpi_communicator));
+          return file_name(context.output.path(),
+                           Utilities::MPI::this_mpi_process(
+                             context.mpi_communicator));
         }
 
         /** The error of a missing checkpoint @p name. */
@@ -94,21 +138,77 @@ namespace masonry
                                 "output directory and number of ranks)");
         }
 
-        /** Checkpoint @p name starts with this version's format tag. */
-        void
-        check_format(const unsigned int format, const std::string &name)
+        /** The error of checkpoint @p name that cannot be read (@p why). */
+        dealii::ExcMessage
+        unreadable(const std::string &name, const std::string &why)
         {
-          AssertThrow(format == checkpoint_format,
+          return ExcParameter("Resume",
+                              "the checkpoint " + name + " cannot be read (" +
+                                why + ")");
+        }
+
+        /** Read the header of checkpoint @p name from @p ar: after the
+         * format tag, which must be this version's, the rest. */
+        Header
+        read_header(boost::archive::binary_iarchive &ar,
+                    const std::string               &name)
+        {
+          Header h;
+          ar    &h.format;
+          AssertThrow(h.format == checkpoint_format,
                       ExcParameter("Resume",
                                    "the checkpoint " + name +
                                      " was written by another version of "
                                      "masonry (another layout); run from "
                                      "the start"));
+          ar &h.n_ranks &h.n_dofs &h.inputs;
+          return h;
+        }
+
+        /** The first entry of @p then (the checkpoint's) to which @p now
+         * gives another value, for the error: "`PATH' was `A' in that run,
+         * `B' here", and how many more differ; "" if none. */
+        std::string
+        first_difference(
+          const std::vector<std::pair<std::string, std::string>> &then,
+          const std::vector<std::pair<std::string, std::string>> &now)
+        {
+          const auto quoted = [](const std::string &value) {
+            return "`" + value + "'";
+          };
+          std::map<std::string, std::string> values(now.begin(), now.end());
+          std::string                        first;
+          unsigned int                       n = 0;
+          for (const auto &[path, value] : then)
+            {
+              const auto it    = values.find(path);
+              const bool found = it != values.end();
+              if (found && it->second != value && n++ == 0)
+                first = quoted(path) + " was " + quoted(value) +
+                        " in that run, " + quoted(it->second) + " here";
+              else if (!found && n++ == 0)
+                first = quoted(path) + " was " + quoted(value) +
+                        " in that run, not an entry here";
+              if (found)
+                values.erase(it);
+            }
+          // entries of this run that the checkpoint's run did not have (a
+          // plugin library of its own)
+          for (const auto &[path, value] : values)
+            if (n++ == 0)
+              first = quoted(path) + " is " + quoted(value) +
+                      " here, not an entry of that run";
+          if (n > 1)
+            first += " (and " + std::to_string(n - 1) + " more)";
+          return first;
         }
       } // namespace
 
       void
-      check_checkpoint(const std::string &directory, const MPI_Comm comm)
+      check_checkpoint(
+        const std::string                                      &directory,
+        const std::vector<std::pair<std::string, std::string>> &inputs,
+        const MPI_Comm                                          comm)
       {
         // `masonry --validate' checks without starting MPI: one rank
         const bool         mpi = Utilities::MPI::job_supports_mpi();
@@ -116,36 +216,44 @@ namespace masonry
                              mpi ? Utilities::MPI::this_mpi_process(comm) : 0,
                            n_ranks_now =
                              mpi ? Utilities::MPI::n_mpi_processes(comm) : 1;
-        const std::string name = directory +
-                                 (directory.back() == '/' ? "" : "/") +
-                                 "checkpoint." + std::to_string(rank);
-        std::string error;
+        const std::string name = file_name(directory, rank);
+        std::string       error;
         try
           {
             std::ifstream in(name, std::ios::binary);
             AssertThrow(in, no_checkpoint(name));
+            Header header;
             try
               {
                 boost::archive::binary_iarchive ar(in);
-                unsigned int                    format = 0, n_ranks = 0;
-                ar                             &format;
-                check_format(format, name);
-                ar &n_ranks;
-                AssertThrow(n_ranks == n_ranks_now,
-                            ExcParameter("Resume",
-                                         "the checkpoint was written by a "
-                                         "run with " +
-                                           std::to_string(n_ranks) +
-                                           " ranks; resume with as many"));
+                header = read_header(ar, name);
               }
             catch (const boost::archive::archive_exception &e)
               {
-                AssertThrow(false,
-                            ExcParameter("Resume",
-                                         "the checkpoint " + name +
-                                           " cannot be read (" + e.what() +
-                                           ")"));
+                AssertThrow(false, unreadable(name, e.what()));
               }
+            catch (const std::bad_alloc &)
+              {
+                AssertThrow(false, unreadable(name, "damaged"));
+              }
+            AssertThrow(header.n_ranks == n_ranks_now,
+                        ExcParameter("Resume",
+                                     "the checkpoint was written by a run "
+                                     "with " +
+                                       std::to_string(header.n_ranks) +
+                                       " ranks; resume with as many"));
+            const std::string difference =
+              first_difference(header.inputs, inputs);
+            AssertThrow(difference.empty(),
+                        ExcParameter("Resume",
+                                     "the checkpoint was written by a run "
+                                     "with other parameters: " +
+                                       difference +
+                                       "; resume with the stopped run's "
+                                       "file (only `Maximum steps', "
+                                       "`Checkpoint interval', `Assembly "
+                                       "threads' and `Output directory' "
+                                       "may change)"));
           }
         catch (const std::exception &exc)
           {
@@ -173,12 +281,12 @@ namespace masonry
             OutputFile out(name);
             {
               boost::archive::binary_oarchive ar(out);
-              unsigned int                    format = checkpoint_format;
-              ar                             &format;
-              unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
-              types::global_dof_index n_dofs =
-                parts.system.dof_handler.n_dofs();
-              ar &n_ranks &n_dofs;
+              Header                          header;
+              header.format  = checkpoint_format;
+              header.n_ranks = Utilities::MPI::n_mpi_processes(comm);
+              header.n_dofs  = parts.system.dof_handler.n_dofs();
+              header.inputs  = parts.inputs;
+              ar &header.format &header.n_ranks &header.n_dofs &header.inputs;
               serialize_parts(ar, parts);
               std::vector<std::pair<types::global_dof_index, double>> values;
               std::vector<double> increments;
@@ -225,19 +333,18 @@ namespace masonry
         try
           {
             boost::archive::binary_iarchive ar(in);
-            unsigned int                    format = 0;
-            ar                             &format;
-            check_format(format, name);
-            unsigned int            n_ranks;
-            types::global_dof_index n_dofs;
-            ar &n_ranks            &n_dofs;
-            AssertThrow(n_ranks == Utilities::MPI::n_mpi_processes(comm) &&
-                          n_dofs == parts.system.dof_handler.n_dofs(),
+            // check_checkpoint() has compared the header before anything
+            // was written; these are what the parts below rely on
+            const Header header = read_header(ar, name);
+            AssertThrow(header.n_ranks ==
+                            Utilities::MPI::n_mpi_processes(comm) &&
+                          header.n_dofs == parts.system.dof_handler.n_dofs(),
                         ExcParameter("Resume",
                                      "the checkpoint was written by a run "
                                      "with " +
-                                       std::to_string(n_ranks) + " ranks and " +
-                                       std::to_string(n_dofs) +
+                                       std::to_string(header.n_ranks) +
+                                       " ranks and " +
+                                       std::to_string(header.n_dofs) +
                                        " DOFs; resume with the same "
                                        "parameters and number of ranks"));
             serialize_parts(ar, parts);
@@ -261,18 +368,12 @@ namespace masonry
           }
         catch (const boost::archive::archive_exception &e)
           {
-            AssertThrow(false,
-                        ExcParameter("Resume",
-                                     "the checkpoint " + name +
-                                       " cannot be read (" + e.what() + ")"));
+            AssertThrow(false, unreadable(name, e.what()));
           }
         catch (const std::bad_alloc &)
           {
             // a size read from a damaged file
-            AssertThrow(false,
-                        ExcParameter("Resume",
-                                     "the checkpoint " + name +
-                                       " cannot be read (damaged)"));
+            AssertThrow(false, unreadable(name, "damaged"));
           }
         parts.system.orphans = orphan_dofs(parts.system, parts.specimen);
         parts.system.make_constraints();

@@ -16,6 +16,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "assembly/point_states.h"
@@ -37,13 +38,26 @@ namespace masonry
         unsigned int checkpoint_interval = 0;
         /** Continue from the checkpoint in the output directory. */
         bool resume = false;
+        /** The entries of the parameter file, each with its full path,
+         * except those a resumed run may set otherwise (resume_may_change()):
+         * a checkpoint holds those of its run, and a resume must repeat
+         * them. */
+        std::vector<std::pair<std::string, std::string>> inputs;
 
         /** Declare the entries in the present subsection. */
         static void
         declare_parameters(dealii::ParameterHandler &prm);
-        /** Read them. */
+        /** Read them, and the whole file's entries into #inputs. */
         void
         parse_parameters(dealii::ParameterHandler &prm);
+
+        /** Whether a resumed run may give the entry @p path another value
+         * than the run that wrote the checkpoint: `Resume', `Maximum
+         * steps', `Checkpoint interval', `Assembly threads' (it changes no
+         * number) and `Output directory' (the same directory, spelled
+         * otherwise). */
+        static bool
+        resume_may_change(const std::string &path);
       };
 
       /** Counters of the step loop. */
@@ -71,14 +85,21 @@ namespace masonry
         System       &system;
         /** What each postprocessor saves, in their order. */
         std::vector<std::string> &postprocessors;
+        /** The run's entries that a resume must repeat. */
+        const std::vector<std::pair<std::string, std::string>> &inputs;
       };
 
       /** Before anything is written (`Resume = true'): this rank's
-       * checkpoint in @p directory exists, has this version's layout and was
-       * written by as many ranks; else every rank of @p comm throws the
-       * same one-line error naming `Resume'. */
+       * checkpoint in @p directory exists, has this version's layout, was
+       * written by as many ranks and by a run whose entries were @p inputs
+       * (CheckpointSettings::inputs); else every rank of @p comm throws the
+       * same one-line error naming `Resume' (and the first entry that
+       * differs). */
       void
-      check_checkpoint(const std::string &directory, const MPI_Comm comm);
+      check_checkpoint(
+        const std::string                                      &directory,
+        const std::vector<std::pair<std::string, std::string>> &inputs,
+        const MPI_Comm                                          comm);
 
       /** Write this rank's checkpoint (replaces the last one only once
        * complete). */

@@ -467,7 +467,8 @@ namespace masonry
                 states,
                 solver,
                 system,
-                postprocessor_data};
+                postprocessor_data,
+                settings.checkpoint.inputs};
       }
 
       void

@@ -499,6 +499,40 @@ namespace masonry
     return v;
   }
 
+  std::vector<std::pair<std::string, std::string>>
+  parameter_values(const dealii::ParameterHandler &prm)
+  {
+    // the handler's own short form, one `set' line an entry: "subsection
+    // NAME", "set NAME = VALUE" (NAME padded with blanks) and "end"
+    std::ostringstream text;
+    prm.print_parameters(text, dealii::ParameterHandler::ShortPRM);
+    std::istringstream                               in(text.str());
+    std::vector<std::string>                         path;
+    std::vector<std::pair<std::string, std::string>> values;
+    std::string                                      line;
+    while (std::getline(in, line))
+      {
+        line = trim(line);
+        if (line.rfind("subsection ", 0) == 0)
+          path.push_back(trim(line.substr(11)));
+        else if (line == "end" && !path.empty())
+          path.pop_back();
+        else if (line.rfind("set ", 0) == 0)
+          {
+            const std::size_t equal = line.find('=');
+            std::string       name;
+            for (const auto &p : path)
+              name += p + "/";
+            name += trim(line.substr(4, equal - 4));
+            values.emplace_back(name,
+                                equal == std::string::npos ?
+                                  std::string() :
+                                  trim(line.substr(equal + 1)));
+          }
+      }
+    return values;
+  }
+
   std::vector<double>
   split_doubles(const std::string &text, const std::string &entry)
   {

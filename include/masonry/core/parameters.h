@@ -11,6 +11,7 @@
 
 #include <exception>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace masonry
@@ -164,6 +165,14 @@ namespace masonry
    */
   double
   positive_entry(dealii::ParameterHandler &prm, const std::string &entry);
+
+  /**
+   * Every entry of @p prm at any depth, whatever its present subsection: the
+   * full path ("Wallette/Collar bed gap") and the value, in the order
+   * print_parameters() gives them (subsections and entries by name).
+   */
+  std::vector<std::pair<std::string, std::string>>
+  parameter_values(const dealii::ParameterHandler &prm);
 
   /** Split a comma-separated list of doubles (e.g. a vector entry). */
   std::vector<double>
