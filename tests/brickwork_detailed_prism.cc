@@ -37,7 +37,7 @@
 #include <sstream>
 
 #include "../source/brickwork/assembly/point_states.h"
-#include "../source/brickwork/solution/system.h"
+#include "../source/brickwork/assembly/system.h"
 #include "../source/brickwork/specimen/mesh.h"
 #include "../source/brickwork/specimen/specimen.h"
 #include "brickwork_tests.h"

@@ -20,8 +20,8 @@
 #include <vector>
 
 #include "assembly/point_states.h"
+#include "assembly/system.h"
 #include "solution/step_controller.h"
-#include "solution/system.h"
 #include "specimen/specimen.h"
 
 namespace masonry

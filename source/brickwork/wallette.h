@@ -22,11 +22,11 @@
 
 #include "assembly/assembler.h"
 #include "assembly/integrator.h"
+#include "assembly/system.h"
 #include "checkpoint.h"
 #include "solution/deletion.h"
 #include "solution/newton.h"
 #include "solution/step_controller.h"
-#include "solution/system.h"
 #include "specimen/mesh.h"
 #include "specimen/specimen.h"
 

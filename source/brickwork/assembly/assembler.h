@@ -18,7 +18,6 @@
 #include <map>
 #include <string>
 
-#include "../solution/system.h"
 #include "../specimen/joints.h"
 #include "../specimen/specimen.h"
 #include "crs_adder.h"
@@ -26,6 +25,7 @@
 #include "interface_element.h"
 #include "nonlocal.h"
 #include "point_states.h"
+#include "system.h"
 
 namespace masonry
 {

@@ -10,7 +10,7 @@
 
 #include <vector>
 
-#include "../solution/system.h"
+#include "system.h"
 
 namespace masonry
 {

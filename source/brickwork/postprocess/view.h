@@ -14,7 +14,7 @@
 
 #include "../assembly/interface_element.h"
 #include "../assembly/point_states.h"
-#include "../solution/system.h"
+#include "../assembly/system.h"
 #include "../specimen/joints.h"
 #include "../specimen/mesh.h"
 #include "../specimen/specimen.h"

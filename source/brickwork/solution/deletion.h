@@ -17,9 +17,9 @@
 #include <deal.II/fe/fe_values.h>
 
 #include "../assembly/point_states.h"
+#include "../assembly/system.h"
 #include "../specimen/joints.h"
 #include "../specimen/specimen.h"
-#include "system.h"
 
 namespace masonry
 {

@@ -13,8 +13,8 @@
 #include <string>
 
 #include "../assembly/assembler.h"
+#include "../assembly/system.h"
 #include "step_controller.h"
-#include "system.h"
 
 namespace masonry
 {
