@@ -13,6 +13,7 @@
 #include <boost/serialization/utility.hpp>
 #include <boost/serialization/vector.hpp>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -50,11 +51,11 @@ namespace masonry
           "number of MPI ranks) instead of starting from zero; the curve "
           "and results continue as if the run had not stopped. Only "
           "`Maximum steps', `Checkpoint interval', `Assembly threads' and "
-          "`Output directory' may differ from the stopped run's file: a "
-          "checkpoint that is missing, of another version or number of "
-          "ranks, or of a run with another value of any other entry is "
-          "refused with an error naming that entry, before anything is "
-          "written.");
+          "`Output directory' may differ from the stopped run's file (a "
+          "number may be written otherwise: 0.01 or 1e-2): a checkpoint "
+          "that is missing, of another version or number of ranks, or of "
+          "a run with another value of any other entry is refused with an "
+          "error naming that entry, before anything is written.");
       }
 
       void
@@ -165,6 +166,33 @@ namespace masonry
           return h;
         }
 
+        /** Whether two values of an entry say the same: equal text, or the
+         * same comma-separated items, each equal as text (blanks around it
+         * aside) or as a number ("0.01" and "1e-2"). */
+        bool
+        same_value(const std::string &a, const std::string &b)
+        {
+          if (a == b)
+            return true;
+          const auto items_a = Utilities::split_string_list(a, ','),
+                     items_b = Utilities::split_string_list(b, ',');
+          if (items_a.size() != items_b.size())
+            return false;
+          const auto number = [](const std::string &text, double &x) {
+            char *end = nullptr;
+            x         = std::strtod(text.c_str(), &end);
+            return !text.empty() && end == text.c_str() + text.size();
+          };
+          for (std::size_t i = 0; i < items_a.size(); ++i)
+            {
+              double x = 0, y = 0;
+              if (items_a[i] != items_b[i] &&
+                  !(number(items_a[i], x) && number(items_b[i], y) && x == y))
+                return false;
+            }
+          return true;
+        }
+
         /** The first entry of @p then (the checkpoint's) to which @p now
          * gives another value, for the error: "`PATH' was `A' in that run,
          * `B' here", and how many more differ; "" if none. */
@@ -183,7 +211,7 @@ namespace masonry
             {
               const auto it    = values.find(path);
               const bool found = it != values.end();
-              if (found && it->second != value && n++ == 0)
+              if (found && !same_value(it->second, value) && n++ == 0)
                 first = quoted(path) + " was " + quoted(value) +
                         " in that run, " + quoted(it->second) + " here";
               else if (!found && n++ == 0)
