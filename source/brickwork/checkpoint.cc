@@ -41,7 +41,12 @@ namespace masonry
           "Write the state (displacements, brick and joint histories, "
           "deleted cells, protocol position, curve) to checkpoint.RANK in "
           "the output directory every this many converged steps (0: only "
-          "when the run stops early: no convergence or `Maximum steps').");
+          "when the run stops early: no convergence or `Maximum steps'). "
+          "With `Newton chord across steps = true' a checkpoint also lets "
+          "the kept factorisation go (so that a resumed run repeats the "
+          "uninterrupted one), so another interval moves the results by "
+          "what `Newton tolerance' lets through, as another tolerance "
+          "would.");
         prm.declare_entry(
           "Resume",
           "false",

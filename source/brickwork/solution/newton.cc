@@ -124,11 +124,12 @@ namespace masonry
           "tolerance lets through (the single cyclic example with 1e-8: cycle "
           "peaks within 1e-7, 0.72-0.78 of the CPU time; the triple one with 1e-3: "
           "the peak within 2e-4, 0.84 of the CPU time; "
-          "contrib/benchmarks/wallette_cyclic). The kept factorisation is "
+          "doc/notes/wallette-solver-speed.md). The kept factorisation is "
           "let go at every checkpoint, so a run resumed from a checkpoint of "
           "`Checkpoint interval' equals the uninterrupted run to round-off; "
           "one resumed from the checkpoint of a signal (SIGTERM, Ctrl-C) "
-          "equals it to the tolerance. `Linear solver = direct' and `direct "
+          "equals it to the tolerance; another `Checkpoint interval' moves "
+          "the results by as much. `Linear solver = direct' and `direct "
           "klu' only (the Krylov solvers ignore it).");
         prm.declare_entry(
           "Residual reference",

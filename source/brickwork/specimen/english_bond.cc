@@ -112,5 +112,6 @@ MASONRY_REGISTER_BOND(masonry::brickwork::EnglishBond,
                       "english",
                       "English bond, double or triple thickness: courses of "
                       "headers and stretchers with queen closers (see "
-                      "Thickness). Needs a number of elements along the "
-                      "brick length that is a multiple of 4.")
+                      "Thickness). The simplified model needs a number of "
+                      "elements along the brick length that is a multiple "
+                      "of 4.")

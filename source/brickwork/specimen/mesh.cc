@@ -125,8 +125,10 @@ namespace masonry
                           "stretcher; the mesh spacing (enlarged length / "
                           "this number) is used for every brick, so that the "
                           "meshes of neighbouring bricks match across the "
-                          "joints (even for the stretcher bond, a multiple "
-                          "of 4 for the english bond).");
+                          "joints (simplified model: even for the stretcher "
+                          "bond, a multiple of 4 for the english bond; the "
+                          "detailed model's grid runs through every unit "
+                          "face and takes any number).");
         prm.declare_entry("Elements along the width",
                           "2",
                           Integer(1, 64),

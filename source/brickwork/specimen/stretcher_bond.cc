@@ -37,5 +37,5 @@ MASONRY_REGISTER_BOND(masonry::brickwork::StretcherBond,
                       "Stretcher (running) bond, single thickness (one "
                       "brick width): every other course starts and ends "
                       "with a half bat, so head joints are offset by half "
-                      "a brick. Needs an even number of elements along the "
-                      "brick length.")
+                      "a brick. The simplified model needs an even number "
+                      "of elements along the brick length.")
