@@ -1,7 +1,6 @@
 #!/usr/bin/python3
 """Cyclic wallette benchmark (called by ./run, which documents the options)."""
 import argparse
-import csv
 import json
 import os
 import re
@@ -13,7 +12,7 @@ here = os.path.dirname(os.path.abspath(__file__))
 root = os.path.dirname(os.path.dirname(os.path.dirname(here)))
 sys.path.insert(0, os.path.join(root, "contrib", "study"))
 from study import set_entry  # noqa: E402
-from report import envelope_fit  # noqa: E402
+from report import envelope_fit, read_csv  # noqa: E402
 sys.path.insert(0, os.path.dirname(here))
 from wallette_common import (cells, cpu_seconds, read_rows,  # noqa: E402
                              write_rows)
@@ -23,7 +22,6 @@ THICKNESSES = ("single", "double", "triple")
 # within 4 % of the next finer mesh
 TARGET_CHANGE = 0.04
 EXAMPLE_MESH = "4x2x2"
-
 
 
 def run_case(thickness, mesh, half_step, ranks, directory):
@@ -92,16 +90,12 @@ def run_case(thickness, mesh, half_step, ranks, directory):
 
 def envelope(out):
     """The envelope RMS before and after the peak (the study's measure,
-    contrib/study/report.py) and the last cycle's peak (MPa) of the run in
-    @p out; nothing for a run without curve.csv and cycles.csv."""
+    contrib/study/report.py) and the last cycle's peak (Pa) of the run in
+    @p out (what of them there is)."""
     row = {}
-    try:
-        with open(os.path.join(out, "curve.csv")) as f:
-            curve = [{k: float(v) for k, v in r.items()}
-                     for r in csv.DictReader(f)]
-        with open(os.path.join(out, "cycles.csv")) as f:
-            cycles = list(csv.DictReader(f))
-    except (OSError, ValueError, KeyError):
+    curve = read_csv(os.path.join(out, "curve.csv"))
+    cycles = read_csv(os.path.join(out, "cycles.csv"))
+    if not curve:
         return row
     fit = envelope_fit([{"name": "run", "curve": curve}]).get("run")
     if fit:
@@ -109,7 +103,7 @@ def envelope(out):
             if value is not None:
                 row[key] = round(value, 4)
     if cycles:
-        row["last_cycle_peak"] = float(cycles[-1]["peak_stress_Pa"])
+        row["last_cycle_peak"] = cycles[-1]["peak_stress_Pa"]
     return row
 
 
